@@ -1,1 +1,16 @@
-//! placeholder
+//! Polygonizers, the half-edge mesh, topology reports and mesh I/O of solidkit.
+//!
+//! Data flow: a signed field (from `solidkit-kernel`) is polygonized by [`marching_cubes`] into an
+//! [`IndexedMesh`]; any indexed mesh (polygonized or read from a file by [`io`]) can be verified by
+//! [`topology::TopologyReport`] and navigated as a [`halfedge::HalfEdgeMesh`].
+#![warn(missing_docs)]
+
+pub mod halfedge;
+pub mod io;
+pub mod marching_cubes;
+pub mod mesh;
+pub mod topology;
+
+pub use halfedge::HalfEdgeMesh;
+pub use mesh::IndexedMesh;
+pub use topology::TopologyReport;

@@ -1,0 +1,1 @@
+//! Mesh file input and output (placeholder until the I/O module lands).

@@ -1,0 +1,1 @@
+//! Marching cubes (placeholder until the module lands).
