@@ -1,0 +1,87 @@
+//! JSON format tests: lossless round trips of every node type and located, path-naming errors.
+
+use crate::{KernelError, Solid, json};
+use glam::DVec3;
+
+fn every_node() -> Solid {
+    Solid::union_all([
+        Solid::sphere(0.1 + 0.2),
+        Solid::cuboid(DVec3::new(1.0, 2.0, 1e-7)).translate(DVec3::new(-1.5, 0.0, 1e300)),
+        Solid::cylinder(0.5, 2.0).rotate(DVec3::new(1.0, 1.0, 0.0), 33.3),
+        Solid::cone(1.0, 0.0, 2.0).scale(DVec3::new(1.0, 2.0, 3.0)),
+        Solid::torus(1.0, 0.25).mirror(DVec3::Y),
+        Solid::difference_all(
+            Solid::cube(2.0),
+            [Solid::half_space(DVec3::new(0.0, 0.6, 0.8), -0.1)],
+        ),
+        Solid::intersection_all([Solid::sphere(1.0).affine([
+            [1.0, 0.2, 0.0, 0.5],
+            [0.0, 1.0, 0.0, 0.0],
+            [0.0, 0.0, 2.0, -1.0],
+        ])]),
+        Solid::union_all([]),
+    ])
+}
+
+#[test]
+fn round_trip_is_lossless() {
+    let s = every_node();
+    let text = json::to_string(&s);
+    let back = json::from_str(&text).unwrap();
+    assert!(back == s, "{text}");
+    assert_eq!(json::to_string(&back), text);
+}
+
+#[test]
+fn bare_nodes_and_scalar_sizes_are_accepted() {
+    let s = json::from_str(r#"{"type": "box", "size": 2}"#).unwrap();
+    assert!(s == Solid::cube(2.0));
+    let s = json::from_str(r#"{"type": "scale", "factor": 2, "child": {"type": "sphere", "radius": 1, "comment": "unit"}}"#).unwrap();
+    assert!(s == Solid::sphere(1.0).scale_uniform(2.0));
+}
+
+fn error(text: &str) -> (usize, usize, String) {
+    match json::from_str(text) {
+        Err(KernelError::Json {
+            line,
+            column,
+            message,
+        }) => (line, column, message),
+        other => panic!("expected a JSON error, got {other:?}"),
+    }
+}
+
+#[test]
+fn errors_name_line_column_and_path() {
+    let text = "{\"format\": \"solidkit-tree\", \"version\": 1, \"root\":\n {\"type\": \"union\", \"children\": [\n  {\"type\": \"sphere\", \"radius\": 1},\n  {\"type\": \"sphere\", \"radius\": -2}]}}";
+    assert_eq!(
+        error(text),
+        (
+            4,
+            32,
+            "children[1].radius: expected a positive number".into()
+        )
+    );
+    let (line, col, msg) = error("{\"type\": \"sphere\", \"radius\": NaN}");
+    assert_eq!((line, col), (1, 30));
+    assert!(msg.contains("NaN"), "{msg}");
+    let (_, _, msg) = error(r#"{"type": "union", "children": [{"type": "spere", "radius": 1}]}"#);
+    assert_eq!(msg, "children[0].type: unknown node type \"spere\"");
+    let (_, _, msg) = error(
+        r#"{"type": "translate", "offset": [1, 2], "child": {"type": "sphere", "radius": 1}}"#,
+    );
+    assert_eq!(msg, "offset: expected 3 numbers, found 2");
+    let (_, _, msg) = error(r#"{"type": "cylinder", "radius": 1}"#);
+    assert_eq!(msg, "root: missing key \"height\"");
+    let (_, _, msg) = error(r#"{"type": "sphere", "radius": 1, "center": [0, 0, 0]}"#);
+    assert!(msg.starts_with("center: unknown key"), "{msg}");
+    let (_, _, msg) = error(r#"{"format": "solidkit-tree", "version": 2, "root": {}}"#);
+    assert!(msg.contains("unsupported version 2"), "{msg}");
+    let (_, _, msg) = error(
+        r#"{"type": "scale", "factor": [1, 0, 1], "child": {"type": "sphere", "radius": 1}}"#,
+    );
+    assert!(msg.contains("singular"), "{msg}");
+    let (line, _, msg) = error("{\"type\": \"sphere\",\n \"radius\": 1,,}");
+    assert_eq!(line, 2);
+    assert!(msg.contains("quoted object key"), "{msg}");
+}

@@ -1,0 +1,85 @@
+//! The capped cone (frustum) along z, centred at the origin: radius `r₁` at `z = −h/2`, `r₂` at
+//! `z = h/2`; either radius may be zero (a pointed cone). Exact distance, computed in the
+//! half-plane `(ρ, z)` as the distance to the three profile segments (bottom cap, side, top cap).
+
+use super::{PrimitiveError, Shape, lipschitz_interval, non_negative, positive, radial};
+use crate::{Aabb, Interval};
+use glam::{DVec2, DVec3};
+
+/// A capped cone along z, centred at the origin.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Cone {
+    /// Radius at `z = −height/2`.
+    pub bottom_radius: f64,
+    /// Radius at `z = +height/2`.
+    pub top_radius: f64,
+    /// Height (length along z).
+    pub height: f64,
+}
+
+impl Cone {
+    /// Signed distance in the profile half-plane and the unit direction of increase.
+    fn profile(&self, q: DVec2) -> (f64, DVec2) {
+        let h = self.height * 0.5;
+        let (r1, r2) = (self.bottom_radius, self.top_radius);
+        let corners = [
+            DVec2::new(0.0, -h),
+            DVec2::new(r1, -h),
+            DVec2::new(r2, h),
+            DVec2::new(0.0, h),
+        ];
+        let mut best = (f64::INFINITY, DVec2::ZERO, DVec2::Y);
+        for w in corners.windows(2) {
+            let (a, b) = (w[0], w[1]);
+            let ab = b - a;
+            let len2 = ab.length_squared();
+            if len2 == 0.0 {
+                continue;
+            }
+            let t = ((q - a).dot(ab) / len2).clamp(0.0, 1.0);
+            let c = a + ab * t;
+            let d = (q - c).length();
+            if d < best.0 {
+                // Outward normal of a segment walked counter-clockwise around the profile.
+                best = (d, c, DVec2::new(ab.y, -ab.x).normalize());
+            }
+        }
+        let (d, c, n) = best;
+        let inside = q.y.abs() <= h && q.x <= r1 + (r2 - r1) * (q.y + h) / (2.0 * h);
+        let dir = if d > 1e-300 { (q - c) / d } else { n };
+        if inside { (-d, -dir) } else { (d, dir) }
+    }
+}
+
+fn to_profile(p: DVec3) -> DVec2 {
+    DVec2::new((p.x * p.x + p.y * p.y).sqrt(), p.z)
+}
+
+impl Shape for Cone {
+    fn value(&self, p: DVec3) -> f64 {
+        self.profile(to_profile(p)).0
+    }
+    fn gradient(&self, p: DVec3) -> DVec3 {
+        let g = self.profile(to_profile(p)).1;
+        radial(p) * g.x + DVec3::Z * g.y
+    }
+    fn interval(&self, b: &Aabb) -> Interval {
+        lipschitz_interval(self, b)
+    }
+    fn bbox(&self) -> Aabb {
+        let r = self.bottom_radius.max(self.top_radius);
+        Aabb::centered(DVec3::new(r, r, self.height * 0.5))
+    }
+    fn validate(&self) -> Result<(), PrimitiveError> {
+        non_negative("bottom_radius", self.bottom_radius)?;
+        non_negative("top_radius", self.top_radius)?;
+        positive("height", self.height)?;
+        if self.bottom_radius == 0.0 && self.top_radius == 0.0 {
+            return Err(PrimitiveError {
+                parameter: "bottom_radius",
+                problem: "a cone needs at least one positive radius",
+            });
+        }
+        Ok(())
+    }
+}

@@ -1,0 +1,173 @@
+//! Primitive solids in their canonical frames (centred at the origin, axis along z), each in its
+//! own file with its value, gradient, interval bound over a box and bounding box.
+//!
+//! Every primitive here is an exact signed distance (Lipschitz constant 1), so a box's interval
+//! can always fall back to `f(centre) ± half-diagonal`.
+
+mod cone;
+mod cuboid;
+mod cylinder;
+mod plane;
+mod sphere;
+mod torus;
+
+pub use cone::Cone;
+pub use cuboid::Cuboid;
+pub use cylinder::Cylinder;
+pub use plane::HalfSpace;
+pub use sphere::Sphere;
+pub use torus::Torus;
+
+use crate::{Aabb, Interval};
+use glam::DVec3;
+
+/// The operations every primitive provides.
+pub trait Shape {
+    /// Signed distance (negative inside) at `p`.
+    fn value(&self, p: DVec3) -> f64;
+    /// Gradient of the field at `p` (unit length where the field is a true distance).
+    fn gradient(&self, p: DVec3) -> DVec3;
+    /// An interval containing every value of the field over the box `b`.
+    fn interval(&self, b: &Aabb) -> Interval;
+    /// A box containing the solid (possibly infinite).
+    fn bbox(&self) -> Aabb;
+    /// Checks the parameters; the message names the bad parameter.
+    fn validate(&self) -> Result<(), PrimitiveError>;
+}
+
+/// A primitive parameter that makes no solid.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+#[error("{parameter}: {problem}")]
+pub struct PrimitiveError {
+    /// The parameter's name as in the JSON tree format.
+    pub parameter: &'static str,
+    /// What is wrong with it.
+    pub problem: &'static str,
+}
+
+/// Checks that `x` is a finite number greater than zero.
+pub(crate) fn positive(parameter: &'static str, x: f64) -> Result<(), PrimitiveError> {
+    if !x.is_finite() {
+        Err(PrimitiveError {
+            parameter,
+            problem: "expected a finite number",
+        })
+    } else if x <= 0.0 {
+        Err(PrimitiveError {
+            parameter,
+            problem: "expected a positive number",
+        })
+    } else {
+        Ok(())
+    }
+}
+
+/// Checks that `x` is a finite number not below zero.
+pub(crate) fn non_negative(parameter: &'static str, x: f64) -> Result<(), PrimitiveError> {
+    if !x.is_finite() {
+        Err(PrimitiveError {
+            parameter,
+            problem: "expected a finite number",
+        })
+    } else if x < 0.0 {
+        Err(PrimitiveError {
+            parameter,
+            problem: "expected a number not below zero",
+        })
+    } else {
+        Ok(())
+    }
+}
+
+/// `+1` for non-negative `x`, `-1` otherwise (a sign that never returns zero).
+pub(crate) fn sign(x: f64) -> f64 {
+    if x >= 0.0 { 1.0 } else { -1.0 }
+}
+
+/// Unit vector from the z axis towards `p` in the xy plane (x axis on the axis itself).
+pub(crate) fn radial(p: DVec3) -> DVec3 {
+    let r = (p.x * p.x + p.y * p.y).sqrt();
+    if r > 0.0 {
+        DVec3::new(p.x / r, p.y / r, 0.0)
+    } else {
+        DVec3::X
+    }
+}
+
+/// Interval of the distance from the z axis over a box.
+pub(crate) fn radial_interval(b: &Aabb) -> Interval {
+    Interval::norm(&[
+        Interval::new(b.min.x, b.max.x),
+        Interval::new(b.min.y, b.max.y),
+    ])
+}
+
+/// Lipschitz-1 bound of a field over a box from its value at the centre.
+pub(crate) fn lipschitz_interval(shape: &impl Shape, b: &Aabb) -> Interval {
+    Interval::around(shape.value(b.center()), b.half_extents().length())
+}
+
+/// One of the primitive solids.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Primitive {
+    /// A ball.
+    Sphere(Sphere),
+    /// An axis-aligned box centred at the origin.
+    Cuboid(Cuboid),
+    /// A capped cylinder along z.
+    Cylinder(Cylinder),
+    /// A capped (possibly truncated) cone along z.
+    Cone(Cone),
+    /// A torus around the z axis.
+    Torus(Torus),
+    /// A half-space `n · p ≤ d`.
+    HalfSpace(HalfSpace),
+}
+
+macro_rules! dispatch {
+    ($self:ident, $s:ident => $e:expr) => {
+        match $self {
+            Primitive::Sphere($s) => $e,
+            Primitive::Cuboid($s) => $e,
+            Primitive::Cylinder($s) => $e,
+            Primitive::Cone($s) => $e,
+            Primitive::Torus($s) => $e,
+            Primitive::HalfSpace($s) => $e,
+        }
+    };
+}
+
+impl Primitive {
+    /// The name used for this primitive in the JSON tree format.
+    pub fn name(&self) -> &'static str {
+        match self {
+            Primitive::Sphere(_) => "sphere",
+            Primitive::Cuboid(_) => "box",
+            Primitive::Cylinder(_) => "cylinder",
+            Primitive::Cone(_) => "cone",
+            Primitive::Torus(_) => "torus",
+            Primitive::HalfSpace(_) => "plane",
+        }
+    }
+}
+
+impl Shape for Primitive {
+    fn value(&self, p: DVec3) -> f64 {
+        dispatch!(self, s => s.value(p))
+    }
+    fn gradient(&self, p: DVec3) -> DVec3 {
+        dispatch!(self, s => s.gradient(p))
+    }
+    fn interval(&self, b: &Aabb) -> Interval {
+        dispatch!(self, s => s.interval(b))
+    }
+    fn bbox(&self) -> Aabb {
+        dispatch!(self, s => s.bbox())
+    }
+    fn validate(&self) -> Result<(), PrimitiveError> {
+        dispatch!(self, s => s.validate())
+    }
+}
+
+#[cfg(test)]
+pub(crate) mod conformance;

@@ -1,0 +1,35 @@
+//! The ball of radius `r` centred at the origin: `f(p) = |p| − r`, an exact distance.
+
+use super::{PrimitiveError, Shape, positive};
+use crate::{Aabb, Interval};
+use glam::DVec3;
+
+/// A ball centred at the origin.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Sphere {
+    /// Radius.
+    pub radius: f64,
+}
+
+impl Shape for Sphere {
+    fn value(&self, p: DVec3) -> f64 {
+        p.length() - self.radius
+    }
+    fn gradient(&self, p: DVec3) -> DVec3 {
+        p.try_normalize().unwrap_or(DVec3::Z)
+    }
+    fn interval(&self, b: &Aabb) -> Interval {
+        let c = [
+            Interval::new(b.min.x, b.max.x),
+            Interval::new(b.min.y, b.max.y),
+            Interval::new(b.min.z, b.max.z),
+        ];
+        Interval::norm(&c) - Interval::point(self.radius)
+    }
+    fn bbox(&self) -> Aabb {
+        Aabb::centered(DVec3::splat(self.radius))
+    }
+    fn validate(&self) -> Result<(), PrimitiveError> {
+        positive("radius", self.radius)
+    }
+}

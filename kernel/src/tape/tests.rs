@@ -1,0 +1,134 @@
+//! Tape tests: values of Booleans and transforms against closed forms, gradients against finite
+//! differences, intervals containing sampled values, and the distance bound of non-uniform scales.
+
+use crate::primitive::conformance::Rng;
+use crate::{Aabb, Solid};
+use glam::DVec3;
+
+fn sample_tree() -> Solid {
+    let body = Solid::cuboid(DVec3::new(1.6, 1.0, 0.8)).rotate(DVec3::new(1.0, 1.0, 0.0), 30.0);
+    let holes = Solid::union_all([
+        Solid::cylinder(0.2, 2.0),
+        Solid::cylinder(0.15, 2.0)
+            .rotate(DVec3::X, 90.0)
+            .translate(DVec3::new(0.4, 0.0, 0.0)),
+        Solid::sphere(0.3)
+            .scale(DVec3::new(1.0, 2.0, 0.5))
+            .translate(DVec3::new(-0.5, 0.2, 0.0)),
+    ]);
+    Solid::difference_all(body, [holes])
+        .union(
+            &Solid::torus(0.6, 0.1)
+                .mirror(DVec3::new(0.0, 1.0, 1.0))
+                .translate(DVec3::Z * 0.8),
+        )
+        .intersection(&Solid::half_space(DVec3::new(0.2, 0.0, 1.0), 0.9))
+}
+
+#[test]
+fn booleans_are_min_and_max() {
+    let a = Solid::sphere(1.0);
+    let b = Solid::sphere(0.5).translate(DVec3::new(1.0, 0.0, 0.0));
+    let p = DVec3::new(0.3, 0.4, -0.2);
+    let (fa, fb) = (a.value(p), b.value(p));
+    assert_eq!(a.union(&b).value(p), fa.min(fb));
+    assert_eq!(a.intersection(&b).value(p), fa.max(fb));
+    assert_eq!(a.difference(&b).value(p), fa.max(-fb));
+    assert_eq!(
+        Solid::difference_all(a.clone(), [b.clone(), b.clone()]).value(p),
+        fa.max(-fb)
+    );
+    assert_eq!(Solid::union_all([]).value(p), f64::INFINITY);
+}
+
+#[test]
+fn rigid_transforms_keep_exact_distances() {
+    let s = Solid::sphere(0.5)
+        .rotate(DVec3::new(0.3, 1.0, 0.2), 47.0)
+        .translate(DVec3::new(1.0, 2.0, 3.0));
+    let mut rng = Rng::new(11);
+    for _ in 0..200 {
+        let p = rng.vec(4.0);
+        let exact = (p - DVec3::new(1.0, 2.0, 3.0)).length() - 0.5;
+        assert!((s.compile().value(p) - exact).abs() < 1e-12);
+    }
+    let m = Solid::cube(1.0)
+        .translate(DVec3::new(2.0, 0.0, 0.0))
+        .mirror(DVec3::X);
+    assert!((m.value(DVec3::new(-2.0, 0.0, 0.0)) + 0.5).abs() < 1e-12);
+}
+
+#[test]
+fn non_uniform_scale_is_a_conservative_distance_bound() {
+    // An ellipsoid with semi-axes (2, 1, 0.5) built from a unit sphere.
+    let e = Solid::sphere(1.0)
+        .scale(DVec3::new(2.0, 1.0, 0.5))
+        .compile();
+    let mut rng = Rng::new(5);
+    for _ in 0..2000 {
+        let a = rng.vec(3.0);
+        let b = a + rng.vec(0.3);
+        assert!(
+            (e.value(a) - e.value(b)).abs() <= (a - b).length() + 1e-12,
+            "not 1-Lipschitz"
+        );
+        // On the surface the field vanishes.
+        let dir = rng.vec(1.0).normalize();
+        let on = DVec3::new(2.0, 1.0, 0.5) * dir;
+        assert!(e.value(on).abs() < 1e-12);
+    }
+    // The true distance from the origin to the surface is the smallest semi-axis.
+    assert!((e.value(DVec3::ZERO) + 0.5).abs() < 1e-12);
+}
+
+#[test]
+fn gradients_agree_with_finite_differences() {
+    let tape = sample_tree().compile();
+    let mut rng = Rng::new(9);
+    let mut checked = 0;
+    for _ in 0..3000 {
+        let p = rng.vec(1.5);
+        let h = 1e-6;
+        let fd = DVec3::new(
+            tape.value(p + DVec3::X * h) - tape.value(p - DVec3::X * h),
+            tape.value(p + DVec3::Y * h) - tape.value(p - DVec3::Y * h),
+            tape.value(p + DVec3::Z * h) - tape.value(p - DVec3::Z * h),
+        ) / (2.0 * h);
+        // Skip points near creases (min/max switches), where the field is not differentiable.
+        let fd2 = DVec3::new(
+            tape.value(p + DVec3::X * 2.0 * h) - tape.value(p - DVec3::X * 2.0 * h),
+            tape.value(p + DVec3::Y * 2.0 * h) - tape.value(p - DVec3::Y * 2.0 * h),
+            tape.value(p + DVec3::Z * 2.0 * h) - tape.value(p - DVec3::Z * 2.0 * h),
+        ) / (4.0 * h);
+        if (fd - fd2).length() > 1e-6 {
+            continue;
+        }
+        assert!(
+            (tape.gradient(p) - fd).length() < 1e-4,
+            "at {p}: {} vs {fd}",
+            tape.gradient(p)
+        );
+        checked += 1;
+    }
+    assert!(checked > 2500, "only {checked} smooth points");
+}
+
+#[test]
+fn intervals_contain_sampled_values() {
+    let tape = sample_tree().compile();
+    let mut rng = Rng::new(21);
+    for _ in 0..500 {
+        let c = rng.vec(1.5);
+        let h = rng.vec(0.4).abs();
+        let b = Aabb::new(c - h, c + h);
+        let iv = tape.interval(&b);
+        for _ in 0..20 {
+            let t = (rng.vec(1.0) + DVec3::ONE) * 0.5;
+            let v = tape.value(b.min + (b.max - b.min) * t);
+            assert!(
+                iv.lo <= v + 1e-12 && v <= iv.hi + 1e-12,
+                "{v} outside {iv:?}"
+            );
+        }
+    }
+}
