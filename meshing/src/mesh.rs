@@ -19,7 +19,10 @@ pub struct IndexedMesh {
 impl IndexedMesh {
     /// A mesh from positions and triangles.
     pub fn new(positions: Vec<DVec3>, triangles: Vec<[u32; 3]>) -> Self {
-        Self { positions, triangles }
+        Self {
+            positions,
+            triangles,
+        }
     }
 
     /// Number of vertices in the vertex array (referenced or not).

@@ -1,1 +1,192 @@
-//! Mesh file input and output (placeholder until the I/O module lands).
+//! Mesh file input and output: STL (binary and ASCII), Wavefront OBJ, PLY (ASCII and binary)
+//! and OFF, to and from [`IndexedMesh`].
+//!
+//! The format follows the file extension (`.stl`, `.obj`, `.ply`, `.off`, any case). Readers
+//! never panic, whatever the bytes: every problem is a [`MeshIoError`] whose message is one line
+//! naming the file, the line or byte offset and the problem. Coordinates must be finite and
+//! every face index in range. Polygonal faces are triangulated by [`triangulate_polygon`]
+//! (never as fans), and the vertices of an STL file (which has no shared vertices) are welded
+//! where bit-identical, so a closed STL becomes a closed indexed mesh.
+//!
+//! Writers go through [`write_atomic`]: a failed write leaves no partial file behind and an
+//! existing file untouched.
+
+mod atomic;
+mod bytes;
+mod error;
+mod obj;
+mod obj_scan;
+mod off;
+mod ply;
+mod ply_header;
+mod polygon;
+mod stl;
+mod text;
+mod weld;
+
+#[cfg(test)]
+mod tests;
+
+use std::io::Write;
+use std::path::Path;
+
+use crate::IndexedMesh;
+
+pub use atomic::write_atomic;
+pub use error::{Location, MeshIoError};
+pub use polygon::{PolygonError, newell_normal, triangulate_polygon};
+
+/// A mesh file format.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum MeshFormat {
+    /// STL, binary or ASCII (triangles only, no shared vertices, 32-bit floats).
+    Stl,
+    /// Wavefront OBJ (positions and polygonal faces; everything else is ignored).
+    Obj,
+    /// Stanford PLY, ASCII or binary (`vertex` and `face` elements).
+    Ply,
+    /// Object File Format (OFF).
+    Off,
+}
+
+impl MeshFormat {
+    /// The format named by the extension of `path` (case-insensitive).
+    pub fn from_path(path: &Path) -> Result<MeshFormat, MeshIoError> {
+        path.extension()
+            .and_then(|ext| ext.to_str())
+            .and_then(MeshFormat::from_extension)
+            .ok_or_else(|| MeshIoError::UnsupportedFormat {
+                path: path.to_path_buf(),
+            })
+    }
+
+    /// The format of a file extension without the dot (`"stl"`, `"OBJ"`, ...), case-insensitive.
+    pub fn from_extension(extension: &str) -> Option<MeshFormat> {
+        let lower = extension.to_ascii_lowercase();
+        match lower.as_str() {
+            "stl" => Some(MeshFormat::Stl),
+            "obj" => Some(MeshFormat::Obj),
+            "ply" => Some(MeshFormat::Ply),
+            "off" => Some(MeshFormat::Off),
+            _ => None,
+        }
+    }
+
+    /// The usual file extension, lower case and without the dot.
+    pub fn extension(self) -> &'static str {
+        match self {
+            MeshFormat::Stl => "stl",
+            MeshFormat::Obj => "obj",
+            MeshFormat::Ply => "ply",
+            MeshFormat::Off => "off",
+        }
+    }
+}
+
+/// Binary or text encoding, for the formats that have both (STL and PLY); OBJ and OFF are always
+/// text.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Default)]
+pub enum Encoding {
+    /// Binary (little endian for PLY): compact and exact.
+    #[default]
+    Binary,
+    /// Human-readable text.
+    Ascii,
+}
+
+/// How [`write_mesh_with`] writes a file.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub struct WriteOptions {
+    /// The format; `None` takes it from the file extension.
+    pub format: Option<MeshFormat>,
+    /// Binary (default) or ASCII, for STL and PLY; ignored by OBJ and OFF.
+    pub encoding: Encoding,
+}
+
+/// Reads a mesh file, in the format named by its extension.
+pub fn read_mesh(path: &Path) -> Result<IndexedMesh, MeshIoError> {
+    let format = MeshFormat::from_path(path)?;
+    let bytes = std::fs::read(path).map_err(|source| MeshIoError::Io {
+        path: path.to_path_buf(),
+        source,
+    })?;
+    read_mesh_bytes(&bytes, format, &path.display().to_string())
+}
+
+/// Reads a mesh from the content of a file; `name` stands for the file in error messages.
+pub fn read_mesh_bytes(
+    bytes: &[u8],
+    format: MeshFormat,
+    name: &str,
+) -> Result<IndexedMesh, MeshIoError> {
+    match format {
+        MeshFormat::Stl => stl::read(bytes, name),
+        MeshFormat::Obj => obj::read(bytes, name),
+        MeshFormat::Ply => ply::read(bytes, name),
+        MeshFormat::Off => off::read(bytes, name),
+    }
+}
+
+/// Writes a mesh in the format named by the extension of `path`, binary where the format has a
+/// binary encoding (STL, PLY).
+pub fn write_mesh(path: &Path, mesh: &IndexedMesh) -> Result<(), MeshIoError> {
+    write_mesh_with(path, mesh, &WriteOptions::default())
+}
+
+/// Writes a mesh as `opts` says, atomically (see [`write_atomic`]).
+///
+/// The mesh is checked first (indices in range, finite coordinates, and for STL coordinates that
+/// fit in 32-bit floats); a mesh that would make an unreadable file is refused with
+/// [`MeshIoError::InvalidMesh`] and nothing is written.
+pub fn write_mesh_with(
+    path: &Path,
+    mesh: &IndexedMesh,
+    opts: &WriteOptions,
+) -> Result<(), MeshIoError> {
+    let format = match opts.format {
+        Some(format) => format,
+        None => MeshFormat::from_path(path)?,
+    };
+    check_writable(mesh, format).map_err(|message| MeshIoError::InvalidMesh {
+        path: path.to_path_buf(),
+        message,
+    })?;
+    write_atomic(path, |out| encode(out, mesh, format, opts.encoding))
+}
+
+/// Writes `mesh` to `out` in `format` (the mesh must pass [`check_writable`]).
+fn encode(
+    out: &mut dyn Write,
+    mesh: &IndexedMesh,
+    format: MeshFormat,
+    encoding: Encoding,
+) -> std::io::Result<()> {
+    match format {
+        MeshFormat::Stl => stl::write(out, mesh, encoding),
+        MeshFormat::Obj => obj::write(out, mesh),
+        MeshFormat::Ply => ply::write(out, mesh, encoding),
+        MeshFormat::Off => off::write(out, mesh),
+    }
+}
+
+/// Why `mesh` cannot be written as `format`, if it cannot.
+fn check_writable(mesh: &IndexedMesh, format: MeshFormat) -> Result<(), String> {
+    let count = mesh.positions.len();
+    for (t, triangle) in mesh.triangles.iter().enumerate() {
+        if let Some(&index) = triangle.iter().find(|&&i| i as usize >= count) {
+            return Err(format!(
+                "triangle {t} refers to vertex {index} but the mesh has {count} vertices"
+            ));
+        }
+    }
+    if let Some(v) = mesh.positions.iter().position(|p| !p.is_finite()) {
+        return Err(format!(
+            "vertex {v} has a non-finite coordinate ({})",
+            mesh.positions[v]
+        ));
+    }
+    match format {
+        MeshFormat::Stl => stl::check_writable(mesh),
+        MeshFormat::Obj | MeshFormat::Ply | MeshFormat::Off => Ok(()),
+    }
+}

@@ -1,1 +1,32 @@
-//! Marching cubes (placeholder until the module lands).
+//! Marching cubes: a closed, oriented 2-manifold triangulation of a field's zero set over a uniform
+//! grid, for every sign pattern.
+//!
+//! [`table`] generates the case table from a face rule that neighbouring cells agree on;
+//! [`grid`] samples a field in parallel; [`polygonize`] turns samples into triangles with vertices
+//! shared by construction. [`mesh_field`] runs the whole path.
+
+pub mod grid;
+pub mod polygonize;
+pub mod table;
+
+pub use grid::{GridError, GridSpec, SampleGrid};
+pub use polygonize::{EDGE_MARGIN, inside, polygonize_into};
+
+use crate::IndexedMesh;
+use solidkit_kernel::Field;
+
+/// Samples `field` on `spec` and polygonizes its zero set.
+pub fn mesh_field(field: &impl Field, spec: GridSpec) -> IndexedMesh {
+    let samples = SampleGrid::sample(field, spec);
+    mesh_samples(&samples)
+}
+
+/// Polygonizes already sampled values.
+pub fn mesh_samples(samples: &SampleGrid) -> IndexedMesh {
+    let mut mesh = IndexedMesh::default();
+    polygonize_into(samples, &mut mesh);
+    mesh
+}
+
+#[cfg(test)]
+mod tests;

@@ -1,5 +1,255 @@
-//! Topology report (placeholder until the module lands).
+//! Topology report of an indexed triangle mesh: counts, Euler characteristic, shells, genus,
+//! defects (boundary, non-manifold and inconsistently oriented edges, non-manifold vertices,
+//! degenerate faces) and measures (volume, area, bounding box).
+//!
+//! The report is computed directly from an [`IndexedMesh`], not through the half-edge mesh, so it
+//! works on any input, however broken. Every step is iterative and at worst O(n log n): directed
+//! edges are sorted by undirected key (`edges.rs`), shells and vertex fans use union-find
+//! (`shells.rs`, `vertices.rs`), and the measures run in deterministic parallel chunks
+//! (`measures.rs`).
+//!
+//! # Unusable triangles
+//!
+//! A triangle with an index outside the vertex array, or with a repeated index, cannot take part in
+//! adjacency. Such triangles count in [`TopologyReport::degenerate_faces`] (and its examples) and
+//! are left out of everything else: `faces`, `edges`, `vertices`, shells, volume and area. So
+//! `euler_characteristic == vertices - edges + faces` always holds, and a mesh whose only flaw is a
+//! collapsed (repeated-index) triangle still reports as a closed manifold. A vertex used only by
+//! such triangles counts as unreferenced. Geometrically degenerate triangles (distinct indices,
+//! zero area) are counted as degenerate but otherwise treated like any other triangle.
 
-/// Topology report (placeholder).
-#[derive(Debug, Clone, Default)]
-pub struct TopologyReport;
+mod edges;
+mod measures;
+mod shells;
+mod text;
+mod union_find;
+mod vertices;
+
+#[cfg(test)]
+pub(crate) mod test_meshes;
+#[cfg(test)]
+mod tests;
+
+use std::borrow::Cow;
+
+use rayon::prelude::*;
+
+pub(crate) use edges::{CornerLoops, EdgeKind, EdgeTable};
+pub(crate) use vertices::fan_counts;
+
+use crate::IndexedMesh;
+use measures::{Measures, is_usable};
+use shells::{ShellTally, Shells};
+
+/// The most offending items of each kind listed in [`Offenders`].
+pub const MAX_EXAMPLES: usize = 8;
+
+/// Topology and measures of a triangle mesh; see the [module docs](self).
+///
+/// Serialises (serde) with the field names as written; they are a stable contract.
+#[derive(Debug, Clone, PartialEq, serde::Serialize)]
+pub struct TopologyReport {
+    /// Distinct vertices referenced by (usable) triangles.
+    pub vertices: usize,
+    /// Undirected edges.
+    pub edges: usize,
+    /// Usable triangles (see the module docs).
+    pub faces: usize,
+    /// `vertices − edges + faces`.
+    pub euler_characteristic: i64,
+    /// Connected components of triangles (sharing a vertex connects).
+    pub shells: usize,
+    /// Total genus over all shells; `None` unless there is at least one shell and every shell is
+    /// closed, manifold and oriented.
+    pub genus: Option<i64>,
+    /// Genus of each shell (χ = 2 − 2g), `None` for shells that are not closed oriented
+    /// manifolds; shells are sorted by their smallest triangle index.
+    pub genus_per_shell: Vec<Option<i64>>,
+    /// Edges used by exactly one triangle.
+    pub boundary_edges: usize,
+    /// Edges used by more than two triangles.
+    pub non_manifold_edges: usize,
+    /// Vertices whose triangles form more than one group connected through edges incident to the
+    /// vertex (the link is not a single fan).
+    pub non_manifold_vertices: usize,
+    /// Two-triangle edges traversed in the same direction by both triangles (a flipped face).
+    pub inconsistent_edges: usize,
+    /// `inconsistent_edges == 0`.
+    pub oriented: bool,
+    /// `boundary_edges == 0` and there is at least one face.
+    pub closed: bool,
+    /// `non_manifold_edges == 0 && non_manifold_vertices == 0`.
+    pub manifold: bool,
+    /// Triangles with a repeated or out-of-range index, or with
+    /// `|cross| <= 1e-12 * longest_edge²`.
+    pub degenerate_faces: usize,
+    /// Positions not referenced by any usable triangle.
+    pub unreferenced_vertices: usize,
+    /// Signed volume by the divergence theorem, positive for outward (CCW) winding. For an open
+    /// mesh it is the volume of the cones from the bounding-box centre to the triangles.
+    pub volume: f64,
+    /// Total triangle area.
+    pub area: f64,
+    /// Bounding box `[min, max]` of the referenced vertices; all zeros for an empty mesh.
+    pub bbox: [[f64; 3]; 2],
+    /// The first few offending items of each kind.
+    pub examples: Offenders,
+}
+
+/// The first [`MAX_EXAMPLES`] offending items of each kind, in ascending order.
+///
+/// Edges are written `[smaller vertex, larger vertex]`; faces are triangle indices into the input.
+#[derive(Debug, Clone, Default, PartialEq, serde::Serialize)]
+pub struct Offenders {
+    /// Edges used by exactly one triangle.
+    pub boundary_edges: Vec<[u32; 2]>,
+    /// Edges used by more than two triangles.
+    pub non_manifold_edges: Vec<[u32; 2]>,
+    /// Vertices whose link is not a single fan.
+    pub non_manifold_vertices: Vec<u32>,
+    /// Two-triangle edges traversed in the same direction.
+    pub inconsistent_edges: Vec<[u32; 2]>,
+    /// Degenerate triangles.
+    pub degenerate_faces: Vec<u32>,
+}
+
+/// Counts of the defective edge kinds.
+#[derive(Debug, Clone, Copy, Default)]
+struct EdgeDefects {
+    boundary: usize,
+    non_manifold: usize,
+    inconsistent: usize,
+}
+
+impl TopologyReport {
+    /// The report of `mesh`. Never panics, whatever the indices (see the module docs).
+    pub fn of(mesh: &IndexedMesh) -> Self {
+        let vertex_count = mesh.positions.len();
+        let triangles = usable_triangles(mesh);
+        let tris: &[[u32; 3]] = &triangles;
+        let table = EdgeTable::build(tris);
+        let shells = Shells::of(tris, vertex_count);
+        let mut tally = ShellTally::new(&shells);
+        let mut examples = Offenders::default();
+        let defects = classify_edges(tris, &table, &shells, &mut tally, &mut examples);
+        let fans = fan_counts(tris, &table, vertex_count);
+        let non_manifold_vertices = classify_vertices(&fans, &shells, &mut tally, &mut examples);
+        let measures = Measures::of(mesh, |v| shells.is_referenced(v));
+        examples.degenerate_faces = measures.degenerate_examples;
+
+        let vertices = (0..vertex_count)
+            .filter(|&v| shells.is_referenced(v))
+            .count();
+        let (edges, faces) = (table.edge_count(), tris.len());
+        let genus_per_shell = tally.genus();
+        let genus = total_genus(&genus_per_shell);
+        Self {
+            vertices,
+            edges,
+            faces,
+            euler_characteristic: to_i64(vertices) - to_i64(edges) + to_i64(faces),
+            shells: shells.count(),
+            genus,
+            genus_per_shell,
+            boundary_edges: defects.boundary,
+            non_manifold_edges: defects.non_manifold,
+            non_manifold_vertices,
+            inconsistent_edges: defects.inconsistent,
+            oriented: defects.inconsistent == 0,
+            closed: defects.boundary == 0 && faces > 0,
+            manifold: defects.non_manifold == 0 && non_manifold_vertices == 0,
+            degenerate_faces: measures.degenerate,
+            unreferenced_vertices: vertex_count - vertices,
+            volume: measures.volume,
+            area: measures.area,
+            bbox: measures.bbox,
+            examples,
+        }
+    }
+
+    /// True for a valid solid boundary: closed, manifold and oriented.
+    pub fn is_closed_manifold(&self) -> bool {
+        self.closed && self.manifold && self.oriented
+    }
+}
+
+/// The usable triangles (see [`is_usable`]), borrowed when all are.
+fn usable_triangles(mesh: &IndexedMesh) -> Cow<'_, [[u32; 3]]> {
+    let n = mesh.positions.len();
+    if mesh.triangles.par_iter().all(|t| is_usable(t, n)) {
+        Cow::Borrowed(&mesh.triangles)
+    } else {
+        Cow::Owned(
+            mesh.triangles
+                .iter()
+                .filter(|t| is_usable(t, n))
+                .copied()
+                .collect(),
+        )
+    }
+}
+
+/// Counts the defective edges, records examples and tallies edges per shell.
+fn classify_edges(
+    tris: &[[u32; 3]],
+    table: &EdgeTable,
+    shells: &Shells,
+    tally: &mut ShellTally,
+    examples: &mut Offenders,
+) -> EdgeDefects {
+    let mut defects = EdgeDefects::default();
+    for edge in table.edges() {
+        let kind = edge.kind(tris);
+        tally.add_edge(
+            shells.of_triangle(edge.first_corner() / 3),
+            kind != EdgeKind::Manifold,
+        );
+        let (count, list) = match kind {
+            EdgeKind::Manifold => continue,
+            EdgeKind::Boundary => (&mut defects.boundary, &mut examples.boundary_edges),
+            EdgeKind::NonManifold => (&mut defects.non_manifold, &mut examples.non_manifold_edges),
+            EdgeKind::Inconsistent => (&mut defects.inconsistent, &mut examples.inconsistent_edges),
+        };
+        *count += 1;
+        push_example(list, edge.vertices());
+    }
+    defects
+}
+
+/// Counts the non-manifold vertices, records examples and flags their shells.
+fn classify_vertices(
+    fans: &[u32],
+    shells: &Shells,
+    tally: &mut ShellTally,
+    examples: &mut Offenders,
+) -> usize {
+    let mut count = 0;
+    for (v, _) in fans.iter().enumerate().filter(|&(_, &n)| n > 1) {
+        count += 1;
+        push_example(&mut examples.non_manifold_vertices, v as u32);
+        if let Some(s) = shells.of_vertex(v) {
+            tally.mark_defective(s);
+        }
+    }
+    count
+}
+
+/// Appends `item` when fewer than [`MAX_EXAMPLES`] are listed.
+fn push_example<T>(list: &mut Vec<T>, item: T) {
+    if list.len() < MAX_EXAMPLES {
+        list.push(item);
+    }
+}
+
+/// The sum of the per-shell genera; `None` when there are no shells or any is `None`.
+fn total_genus(per_shell: &[Option<i64>]) -> Option<i64> {
+    if per_shell.is_empty() {
+        return None;
+    }
+    per_shell.iter().copied().sum()
+}
+
+/// `usize` to `i64`, saturating (counts never get near the limit).
+fn to_i64(n: usize) -> i64 {
+    i64::try_from(n).unwrap_or(i64::MAX)
+}

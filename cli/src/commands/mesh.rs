@@ -1,0 +1,70 @@
+//! `solidkit mesh`: tree → field → marching cubes → report (and mesh file).
+
+use crate::args::{MeshArgs, Method};
+use crate::{input, report};
+use anyhow::{Result, anyhow};
+use glam::DVec3;
+use serde_json::json;
+use solidkit_kernel::{Aabb, Solid};
+use solidkit_meshing::TopologyReport;
+use solidkit_meshing::io::write_mesh;
+use solidkit_meshing::marching_cubes::{GridSpec, mesh_field};
+use std::time::Instant;
+
+/// Meshes the input and prints the report; exit code 0.
+pub fn run(a: &MeshArgs) -> Result<u8> {
+    let mut solid = input::load_solid(&a.input)?;
+    let bounds = match a.bounds {
+        Some(b) => {
+            // Explicit bounds clip the solid, so the mesh is closed even for unbounded solids.
+            let clip = Aabb::new(DVec3::new(b[0], b[1], b[2]), DVec3::new(b[3], b[4], b[5]));
+            solid = solid.intersection(&Solid::cuboid(clip.size()).translate(clip.center()));
+            clip.intersection(&solid.bbox())
+        }
+        None => solid.bbox(),
+    };
+    if bounds.is_empty() {
+        return Err(anyhow!(
+            "{}: the solid is empty (its bounding box is empty)",
+            a.input.display()
+        ));
+    }
+    if !bounds.is_finite() {
+        return Err(anyhow!(
+            "{}: the solid is unbounded; give meshing bounds with --bounds x0,y0,z0,x1,y1,z1",
+            a.input.display()
+        ));
+    }
+    let spec = GridSpec::for_bounds(&bounds, a.resolution)
+        .map_err(|e| anyhow!("{}: {e}", a.input.display()))?;
+    let start = Instant::now();
+    let mesh = match a.method {
+        Method::Mc => mesh_field(&solid.compile(), spec),
+    };
+    let time_s = start.elapsed().as_secs_f64();
+    let r = TopologyReport::of(&mesh);
+    if let Some(out) = &a.output {
+        write_mesh(out, &mesh)?;
+    }
+    if a.json {
+        let extra = [
+            ("time_s", json!(time_s)),
+            ("resolution", json!(a.resolution)),
+            ("cells", json!(spec.cells)),
+            ("method", json!("mc")),
+        ];
+        println!("{}", report::to_json(&r, &extra)?);
+    } else {
+        print!("{}", r.to_text());
+        let [x, y, z] = spec.cells;
+        println!(
+            "resolution: {} ({x} x {y} x {z} cells of {:.6})",
+            a.resolution, spec.cell
+        );
+        println!("time: {time_s:.3} s");
+        if let Some(out) = &a.output {
+            println!("wrote: {}", out.display());
+        }
+    }
+    Ok(0)
+}

@@ -1,0 +1,15 @@
+//! The subcommands, one file each.
+
+mod check;
+mod mesh;
+
+use crate::args::Command;
+use anyhow::Result;
+
+/// Runs a subcommand; returns the process exit code.
+pub fn run(command: Command) -> Result<u8> {
+    match command {
+        Command::Mesh(a) => mesh::run(&a),
+        Command::Check(a) => check::run(&a),
+    }
+}

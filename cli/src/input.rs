@@ -1,0 +1,32 @@
+//! Loading a solid from a file, by extension; errors name the file and the place in it.
+
+use anyhow::{Context, Result, bail};
+use solidkit_kernel::{Solid, json};
+use std::path::Path;
+
+/// Reads and validates the solid in `path`.
+pub fn load_solid(path: &Path) -> Result<Solid> {
+    let name = path.display();
+    let ext = path
+        .extension()
+        .and_then(|e| e.to_str())
+        .map(str::to_ascii_lowercase);
+    match ext.as_deref() {
+        Some("json") => {}
+        Some(other) => bail!("{name}: unsupported input format '.{other}' (expected a .json tree)"),
+        None => bail!("{name}: no file extension (expected a .json tree)"),
+    }
+    let bytes = std::fs::read(path).with_context(|| format!("{name}"))?;
+    let text = match String::from_utf8(bytes) {
+        Ok(t) => t,
+        Err(e) => bail!(
+            "{name}: byte {}: invalid UTF-8",
+            e.utf8_error().valid_up_to()
+        ),
+    };
+    let solid = json::from_str(&text).map_err(|e| anyhow::anyhow!("{name}:{e}"))?;
+    solid
+        .validate()
+        .map_err(|e| anyhow::anyhow!("{name}: {e}"))?;
+    Ok(solid)
+}

@@ -1,0 +1,142 @@
+//! Uniform sampling grids: where the samples are ([`GridSpec`]) and their values ([`SampleGrid`]).
+
+use glam::DVec3;
+use rayon::prelude::*;
+use solidkit_kernel::{Aabb, Field};
+
+/// A uniform grid of cubic cells: `cells[a]` cells (so `cells[a] + 1` samples) along axis `a`.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct GridSpec {
+    /// Position of sample `(0, 0, 0)`.
+    pub origin: DVec3,
+    /// Edge length of a cell.
+    pub cell: f64,
+    /// Number of cells along x, y and z.
+    pub cells: [usize; 3],
+}
+
+/// Why a grid cannot be made.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum GridError {
+    /// The bounds are empty, infinite or NaN.
+    #[error(
+        "meshing bounds must be finite and non-empty (got {min:?} to {max:?}); give explicit bounds"
+    )]
+    BadBounds {
+        /// Minimum corner given.
+        min: [f64; 3],
+        /// Maximum corner given.
+        max: [f64; 3],
+    },
+    /// A resolution of zero.
+    #[error("resolution must be at least 1")]
+    ZeroResolution,
+    /// More samples than this build will allocate.
+    #[error("grid of {cells:?} cells is too large (at most {limit} samples)")]
+    TooLarge {
+        /// Cells per axis requested.
+        cells: [usize; 3],
+        /// The sample limit.
+        limit: usize,
+    },
+}
+
+/// Largest number of samples a dense grid may hold (about 8 GiB of values and edge tables).
+pub const MAX_SAMPLES: usize = 1 << 29;
+
+impl GridSpec {
+    /// A grid over `bounds` with `resolution` cells along its longest side, padded by one cell on
+    /// every side so a solid touching its bounds still meshes closed.
+    pub fn for_bounds(bounds: &Aabb, resolution: usize) -> Result<Self, GridError> {
+        if resolution == 0 {
+            return Err(GridError::ZeroResolution);
+        }
+        let size = bounds.size();
+        if !bounds.is_finite() || size.max_element().is_nan() || size.max_element() <= 0.0 {
+            return Err(GridError::BadBounds {
+                min: bounds.min.to_array(),
+                max: bounds.max.to_array(),
+            });
+        }
+        let cell = size.max_element() / resolution as f64;
+        let count = |extent: f64| ((extent / cell - 1e-9).ceil().max(1.0) as usize) + 2;
+        let cells = [count(size.x), count(size.y), count(size.z)];
+        let origin = bounds.center()
+            - DVec3::new(cells[0] as f64, cells[1] as f64, cells[2] as f64) * (cell * 0.5);
+        let spec = Self {
+            origin,
+            cell,
+            cells,
+        };
+        let samples = spec.sample_count();
+        if samples > MAX_SAMPLES || samples == 0 {
+            return Err(GridError::TooLarge {
+                cells,
+                limit: MAX_SAMPLES,
+            });
+        }
+        Ok(spec)
+    }
+
+    /// Samples per axis.
+    pub fn samples(&self) -> [usize; 3] {
+        [self.cells[0] + 1, self.cells[1] + 1, self.cells[2] + 1]
+    }
+
+    /// Total number of samples (saturating).
+    pub fn sample_count(&self) -> usize {
+        let [x, y, z] = self.samples();
+        x.saturating_mul(y).saturating_mul(z)
+    }
+
+    /// Position of sample `(i, j, k)`.
+    pub fn point(&self, i: usize, j: usize, k: usize) -> DVec3 {
+        self.origin + DVec3::new(i as f64, j as f64, k as f64) * self.cell
+    }
+
+    /// Linear index of sample `(i, j, k)` (x fastest).
+    pub fn index(&self, i: usize, j: usize, k: usize) -> usize {
+        let [sx, sy, _] = self.samples();
+        i + sx * (j + sy * k)
+    }
+}
+
+/// Field values at every sample of a grid.
+#[derive(Debug, Clone)]
+pub struct SampleGrid {
+    /// The grid.
+    pub spec: GridSpec,
+    /// Values, x fastest, then y, then z.
+    pub values: Vec<f64>,
+}
+
+impl SampleGrid {
+    /// Samples `field` at every grid point, one z-slice per parallel task.
+    pub fn sample(field: &impl Field, spec: GridSpec) -> Self {
+        let [sx, sy, _] = spec.samples();
+        let mut values = vec![0.0; spec.sample_count()];
+        values
+            .par_chunks_mut(sx * sy)
+            .enumerate()
+            .for_each(|(k, slice)| {
+                let mut row = vec![DVec3::ZERO; sx];
+                for (j, out) in slice.chunks_mut(sx).enumerate() {
+                    for (i, p) in row.iter_mut().enumerate() {
+                        *p = spec.point(i, j, k);
+                    }
+                    field.values(&row, out);
+                }
+            });
+        Self { spec, values }
+    }
+
+    /// Wraps values already computed (x fastest); `None` if the count does not match the grid.
+    pub fn from_values(spec: GridSpec, values: Vec<f64>) -> Option<Self> {
+        (values.len() == spec.sample_count()).then_some(Self { spec, values })
+    }
+
+    /// Value at sample `(i, j, k)`.
+    pub fn at(&self, i: usize, j: usize, k: usize) -> f64 {
+        self.values[self.spec.index(i, j, k)]
+    }
+}

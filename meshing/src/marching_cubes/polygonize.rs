@@ -1,0 +1,136 @@
+//! Marching cubes over a [`SampleGrid`], in parallel over z-slices, with vertices welded by
+//! construction: each grid edge that changes sign gets exactly one vertex, numbered by the slice
+//! that owns the edge, and every cell using that edge refers to the same number.
+//!
+//! Sign rule: a sample is inside when its value is `< 0`; zero (and NaN) count as outside. Vertex
+//! positions interpolate linearly along the edge, kept at least [`EDGE_MARGIN`] of the edge away
+//! from either end, so no two vertices coincide and no triangle is degenerate.
+
+use super::grid::SampleGrid;
+use super::table::{case_table, edge_origin};
+use crate::sink::MeshSink;
+use glam::DVec3;
+use rayon::prelude::*;
+
+/// Smallest distance, as a fraction of the cell edge, between a vertex and a grid sample.
+pub const EDGE_MARGIN: f64 = 1e-4;
+
+const NONE: u32 = u32::MAX;
+
+/// The inside test for samples (the one fixed rule for exact zeros: outside).
+#[inline]
+pub fn inside(v: f64) -> bool {
+    v < 0.0
+}
+
+/// Crossing vertices owned by one sample slice `k`: edges along x and y within the slice, and
+/// along z from slice `k` to `k + 1`.
+struct SliceVertices {
+    /// Local vertex number of each edge (`NONE` when it does not cross), per axis, x fastest.
+    ids: [Vec<u32>; 3],
+    positions: Vec<DVec3>,
+}
+
+fn crossing(g: &SampleGrid, a: (usize, usize, usize), b: (usize, usize, usize)) -> Option<DVec3> {
+    let (va, vb) = (g.at(a.0, a.1, a.2), g.at(b.0, b.1, b.2));
+    if inside(va) == inside(vb) {
+        return None;
+    }
+    let t = va / (va - vb);
+    let t = if t.is_finite() {
+        t.clamp(EDGE_MARGIN, 1.0 - EDGE_MARGIN)
+    } else {
+        0.5
+    };
+    let (pa, pb) = (g.spec.point(a.0, a.1, a.2), g.spec.point(b.0, b.1, b.2));
+    Some(pa + (pb - pa) * t)
+}
+
+fn slice_vertices(g: &SampleGrid, k: usize) -> SliceVertices {
+    let [sx, sy, sz] = g.spec.samples();
+    let mut ids = [
+        vec![NONE; sx * sy],
+        vec![NONE; sx * sy],
+        vec![NONE; sx * sy],
+    ];
+    let mut positions = Vec::new();
+    for j in 0..sy {
+        for i in 0..sx {
+            let neighbours = [
+                (i + 1 < sx, (i + 1, j, k)),
+                (j + 1 < sy, (i, j + 1, k)),
+                (k + 1 < sz, (i, j, k + 1)),
+            ];
+            for (axis, &(exists, b)) in neighbours.iter().enumerate() {
+                if let Some(p) = exists.then(|| crossing(g, (i, j, k), b)).flatten() {
+                    ids[axis][i + sx * j] = positions.len() as u32;
+                    positions.push(p);
+                }
+            }
+        }
+    }
+    SliceVertices { ids, positions }
+}
+
+/// Triangles of cell layer `k` (between slices `k` and `k + 1`) in global vertex numbers.
+fn layer_triangles(
+    g: &SampleGrid,
+    k: usize,
+    slices: &[SliceVertices],
+    offsets: &[u32],
+) -> Vec<[u32; 3]> {
+    let table = case_table();
+    let [cx, cy, _] = g.spec.cells;
+    let sx = cx + 1;
+    let mut out = Vec::new();
+    for j in 0..cy {
+        for i in 0..cx {
+            let mut mask = 0usize;
+            for c in 0..8 {
+                let (di, dj, dk) = (c & 1, c >> 1 & 1, c >> 2 & 1);
+                if inside(g.at(i + di, j + dj, k + dk)) {
+                    mask |= 1 << c;
+                }
+            }
+            for tri in &table.cases[mask] {
+                out.push(tri.map(|e| {
+                    let (axis, o) = edge_origin(e);
+                    let slice = k + o[2];
+                    let local = slices[slice].ids[axis][(i + o[0]) + sx * (j + o[1])];
+                    debug_assert_ne!(local, NONE, "case table uses only crossing edges");
+                    offsets[slice] + local
+                }));
+            }
+        }
+    }
+    out
+}
+
+/// Polygonizes the zero level set of the samples into `sink`. Deterministic: the output does not
+/// depend on the number of threads.
+pub fn polygonize_into(g: &SampleGrid, sink: &mut impl MeshSink) {
+    let [_, _, sz] = g.spec.samples();
+    let slices: Vec<SliceVertices> = (0..sz)
+        .into_par_iter()
+        .map(|k| slice_vertices(g, k))
+        .collect();
+    let mut offsets = Vec::with_capacity(sz);
+    let mut total = 0u32;
+    for s in &slices {
+        offsets.push(total);
+        total += s.positions.len() as u32;
+    }
+    let layers: Vec<Vec<[u32; 3]>> = (0..g.spec.cells[2])
+        .into_par_iter()
+        .map(|k| layer_triangles(g, k, &slices, &offsets))
+        .collect();
+    let triangles: usize = layers.iter().map(Vec::len).sum();
+    sink.reserve(total as usize, triangles);
+    let mut ids = Vec::with_capacity(total as usize);
+    for s in &slices {
+        ids.extend(s.positions.iter().map(|&p| sink.add_vertex(p)));
+    }
+    for t in layers.iter().flatten() {
+        sink.add_triangle(t.map(|v| ids[v as usize]));
+    }
+}
