@@ -767,34 +767,3 @@ fn random_polygon_faces_are_triangulated_or_rejected() {
         "only {triangulated} random faces were valid"
     );
 }
-
-#[test]
-fn tmp_perf() {
-    let n = 700usize;
-    let mut positions = Vec::new();
-    for i in 0..n { for j in 0..n { positions.push(DVec3::new(i as f64 * 0.37, j as f64 * 0.11, ((i * j) % 7) as f64 * 0.013)); } }
-    let mut triangles = Vec::new();
-    for i in 0..n - 1 { for j in 0..n - 1 {
-        let a = (i * n + j) as u32; let b = a + 1; let c = a + n as u32; let d = c + 1;
-        triangles.push([a, b, d]); triangles.push([a, d, c]);
-    } }
-    let mesh = IndexedMesh::new(positions, triangles);
-    let dir = tempfile::tempdir().unwrap();
-    for (format, encoding) in ALL {
-        let path = dir.path().join(format!("big.{}", format.extension()));
-        let t = std::time::Instant::now();
-        write_mesh_with(&path, &mesh, &WriteOptions { format: None, encoding }).unwrap();
-        let w = t.elapsed();
-        let t = std::time::Instant::now();
-        let back = read_mesh(&path).unwrap();
-        eprintln!("{format:?} {encoding:?}: write {w:?} read {:?} size {} tris {}", t.elapsed(), std::fs::metadata(&path).unwrap().len(), back.triangle_count());
-    }
-    // A single huge polygon face (a circle with 100k corners) in OFF.
-    let k = 100_000;
-    let mut text = format!("OFF\n{k} 1 0\n");
-    for i in 0..k { let a = i as f64 / k as f64 * std::f64::consts::TAU; text += &format!("{} {} 0\n", a.cos(), a.sin()); }
-    text += &format!("{k}"); for i in 0..k { text += &format!(" {i}"); } text += "\n";
-    let t = std::time::Instant::now();
-    let m = read_mesh_bytes(text.as_bytes(), MeshFormat::Off, "circle.off").unwrap();
-    eprintln!("circle: {:?} tris {}", t.elapsed(), m.triangle_count());
-}
