@@ -33,6 +33,22 @@ pub trait Shape {
     fn bbox(&self) -> Aabb;
     /// Checks the parameters; the message names the bad parameter.
     fn validate(&self) -> Result<(), PrimitiveError>;
+
+    /// An upper bound of `|∇f|` over all space: 1 for distance fields. Interval fallbacks use
+    /// `f(centre) ± L · half-diagonal`, and meshing trusts `|f| / L` as a distance bound.
+    fn lipschitz(&self) -> f64 {
+        1.0
+    }
+
+    /// Values at many points in structure-of-arrays form, single precision (the batch
+    /// evaluator's entry point). The default calls [`Shape::value`] per point; hot primitives
+    /// override it with loops the compiler vectorises.
+    fn values_f32(&self, x: &[f32], y: &[f32], z: &[f32], out: &mut [f32]) {
+        for i in 0..out.len() {
+            let p = DVec3::new(x[i] as f64, y[i] as f64, z[i] as f64);
+            out[i] = self.value(p) as f32;
+        }
+    }
 }
 
 /// A primitive parameter that makes no solid.
@@ -102,13 +118,17 @@ pub(crate) fn radial_interval(b: &Aabb) -> Interval {
     ])
 }
 
-/// Lipschitz-1 bound of a field over a box from its value at the centre.
+/// Lipschitz bound of a field over a box from its value at the centre.
 pub(crate) fn lipschitz_interval(shape: &impl Shape, b: &Aabb) -> Interval {
-    Interval::around(shape.value(b.center()), b.half_extents().length())
+    Interval::around(
+        shape.value(b.center()),
+        shape.lipschitz() * b.half_extents().length(),
+    )
 }
 
-/// One of the primitive solids.
-#[derive(Debug, Clone, Copy, PartialEq)]
+/// One of the primitive solids. Variants with large data hold it behind an `Arc`, so cloning a
+/// primitive is always cheap.
+#[derive(Debug, Clone, PartialEq)]
 pub enum Primitive {
     /// A ball.
     Sphere(Sphere),
@@ -166,6 +186,12 @@ impl Shape for Primitive {
     }
     fn validate(&self) -> Result<(), PrimitiveError> {
         dispatch!(self, s => s.validate())
+    }
+    fn lipschitz(&self) -> f64 {
+        dispatch!(self, s => s.lipschitz())
+    }
+    fn values_f32(&self, x: &[f32], y: &[f32], z: &[f32], out: &mut [f32]) {
+        dispatch!(self, s => s.values_f32(x, y, z, out))
     }
 }
 

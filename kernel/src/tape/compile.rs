@@ -38,7 +38,7 @@ impl Solid {
             match solid.kind() {
                 NodeKind::Primitive(p) => {
                     tape.ops.push(Op::Prim(tape.primitives.len() as u32));
-                    tape.primitives.push(*p);
+                    tape.primitives.push(p.clone());
                     depth += 1;
                 }
                 NodeKind::Union => {
