@@ -8,11 +8,10 @@
 pub mod halfedge;
 pub mod io;
 pub mod marching_cubes;
-pub mod mesh;
 pub mod sink;
 pub mod topology;
 
 pub use halfedge::HalfEdgeMesh;
-pub use mesh::IndexedMesh;
 pub use sink::MeshSink;
+pub use solidkit_kernel::IndexedMesh;
 pub use topology::TopologyReport;

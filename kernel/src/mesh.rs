@@ -1,5 +1,5 @@
-//! The indexed triangle mesh: the common currency between polygonizers, file readers and writers,
-//! the half-edge mesh and the topology report.
+//! The indexed triangle mesh: the common currency between exact tessellations (kernel),
+//! polygonizers, file readers and writers, the half-edge mesh and the topology report (meshing).
 
 use glam::DVec3;
 
@@ -7,7 +7,7 @@ use glam::DVec3;
 ///
 /// Triangles are wound counter-clockwise seen from outside (right-hand rule normal points out of the
 /// solid). Nothing here is validated: indices are checked by the readers that build meshes, and the
-/// topology (closed, manifold, oriented) is measured by [`crate::TopologyReport`].
+/// topology (closed, manifold, oriented) is measured by `solidkit_meshing::TopologyReport`.
 #[derive(Debug, Clone, Default, PartialEq)]
 pub struct IndexedMesh {
     /// Vertex positions.
