@@ -3,7 +3,7 @@
 //! A [`Solid`] is a tree of primitives (sphere, box, cylinder, cone, torus, half-space), Booleans
 //! (union, intersection, difference, n-ary) and transforms. Its field is negative inside, positive
 //! outside and a distance bound everywhere (Lipschitz constant 1). For many evaluations lower it to
-//! a [`Tape`] with [`Solid::compile`]; the [`json`] module reads and writes the JSON tree format.
+//! a [`Program`] with [`Solid::compile`]; the [`json`] module reads and writes the JSON tree format.
 //!
 //! Every whole-tree operation (build, clone, drop, compare, validate, lower, evaluate, read, write)
 //! uses explicit work lists, so trees of any depth are safe.
@@ -16,8 +16,8 @@ mod interval;
 pub mod json;
 mod mesh;
 pub mod primitive;
+pub mod program;
 mod solid;
-mod tape;
 mod transform;
 
 pub use aabb::Aabb;
@@ -26,13 +26,18 @@ pub use field::Field;
 pub use interval::Interval;
 pub use mesh::IndexedMesh;
 pub use primitive::{Primitive, Shape};
+pub use program::{Instr, Program};
 pub use solid::{Node, NodeKind, Solid};
-pub use tape::{Op, Scratch, Tape};
 pub use transform::{Transform, TransformError, TransformSpec, singular_value_range};
 
 use glam::DVec3;
 
 impl Solid {
+    /// Lowers the tree to a [`Program`] for evaluation (same as [`Solid::lower`]).
+    pub fn compile(&self) -> Program {
+        self.lower()
+    }
+
     /// Field value at `p` (lowers the tree on every call: use [`Solid::compile`] for many points).
     pub fn value(&self, p: DVec3) -> f64 {
         self.compile().value(p)

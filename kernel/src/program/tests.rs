@@ -1,6 +1,8 @@
-//! Tape tests: values of Booleans and transforms against closed forms, gradients against finite
-//! differences, intervals containing sampled values, and the distance bound of non-uniform scales.
+//! Program tests: values of Booleans and transforms against closed forms, gradients against finite
+//! differences, intervals containing sampled values, the distance bound of non-uniform scales,
+//! sharing in lowering, batch vs scalar agreement, and bit-exact pruning.
 
+use super::{BatchScratch, CHUNK, Instr, IntervalScratch, Pruned};
 use crate::primitive::conformance::Rng;
 use crate::{Aabb, Solid};
 use glam::DVec3;
@@ -131,4 +133,103 @@ fn intervals_contain_sampled_values() {
             );
         }
     }
+}
+
+#[test]
+fn lowering_folds_transforms_and_shares_subtrees() {
+    let ball = Solid::sphere(0.5)
+        .translate(DVec3::X)
+        .rotate(DVec3::Z, 30.0);
+    let s = Solid::union_all([
+        ball.clone(),
+        ball.clone(),
+        Solid::sphere(0.5)
+            .translate(DVec3::X)
+            .rotate(DVec3::Z, 30.0),
+    ]);
+    let p = s.compile();
+    // Three equal balls (two by pointer, one structurally): one leaf, no Min left.
+    assert!(
+        matches!(p.instrs(), [Instr::Leaf { prim: 0, .. }]),
+        "{:?}",
+        p.instrs()
+    );
+    let d = Solid::difference_all(Solid::cube(1.0), [Solid::sphere(0.2), Solid::sphere(0.2)]);
+    assert_eq!(d.compile().len(), 4, "{:?}", d.compile().instrs());
+}
+
+#[test]
+fn registers_are_reused_along_long_chains() {
+    let mut s = Solid::sphere(0.1);
+    for i in 0..2000 {
+        s = s.union(&Solid::sphere(0.1).translate(DVec3::new(i as f64 * 0.01, 0.0, 0.0)));
+    }
+    let p = s.compile();
+    // The first translate is by zero: it folds into the world frame and shares the base leaf.
+    assert_eq!(p.leaf_count(), 2000);
+    assert!(p.register_count() <= 3, "{}", p.register_count());
+}
+
+fn grid_points(n: usize, half: f64) -> Vec<DVec3> {
+    let mut pts = Vec::new();
+    for k in 0..n {
+        for j in 0..n {
+            for i in 0..n {
+                let t = |a: usize| -half + 2.0 * half * a as f64 / (n - 1) as f64;
+                pts.push(DVec3::new(t(i), t(j), t(k)));
+            }
+        }
+    }
+    pts
+}
+
+fn batch_values(p: &super::Program, pts: &[DVec3]) -> Vec<f32> {
+    let x: Vec<f32> = pts.iter().map(|q| q.x as f32).collect();
+    let y: Vec<f32> = pts.iter().map(|q| q.y as f32).collect();
+    let z: Vec<f32> = pts.iter().map(|q| q.z as f32).collect();
+    let mut out = vec![0f32; pts.len()];
+    p.eval_many(&x, &y, &z, &mut out, &mut BatchScratch::new(p));
+    out
+}
+
+#[test]
+fn batch_agrees_with_scalar() {
+    let p = sample_tree().compile();
+    let pts = grid_points(17, 1.6);
+    assert!(pts.len() > 2 * CHUNK);
+    let b = batch_values(&p, &pts);
+    for (q, v) in pts.iter().zip(&b) {
+        let exact = p.value(*q);
+        assert!(
+            (*v as f64 - exact).abs() < 1e-5 * (1.0 + exact.abs()),
+            "{v} vs {exact} at {q}"
+        );
+    }
+}
+
+#[test]
+fn pruned_programs_give_identical_values_inside_their_box() {
+    let p = sample_tree().compile();
+    let mut rng = Rng::new(31);
+    let mut s = IntervalScratch::default();
+    let mut pruned_some = 0;
+    for _ in 0..300 {
+        let c = rng.vec(1.5);
+        let h = rng.vec(0.3).abs() + DVec3::splat(0.01);
+        let b = Aabb::new(c - h, c + h);
+        let pts: Vec<DVec3> = (0..64).map(|_| c + rng.vec(1.0) * h).collect();
+        let full = batch_values(&p, &pts);
+        match p.prune_for_box(&b, &mut s) {
+            Pruned::Inside => assert!(full.iter().all(|v| *v < 0.0)),
+            Pruned::Outside => assert!(full.iter().all(|v| *v > 0.0)),
+            Pruned::Surface(q) => {
+                if q.len() < p.len() {
+                    pruned_some += 1;
+                }
+                let part = batch_values(&q, &pts);
+                assert_eq!(full, part, "pruned program differs in its box");
+            }
+        }
+    }
+    assert!(pruned_some > 25, "pruning rarely applies: {pruned_some}");
 }

@@ -1,0 +1,160 @@
+//! Interval evaluation over a box, recording for each min/max which operand can win, and pruning:
+//! a box gets a shorter program that gives the same values (bit for bit, in single precision)
+//! everywhere inside it.
+//!
+//! Bit-identity needs care because points are evaluated in f32 and intervals in f64: a branch is
+//! only dropped when the other operand wins by more than a margin that covers single-precision
+//! rounding (see [`margin`]), and boxes are only classified inside/outside with the same margin.
+
+use super::{Instr, Program, lower::compact};
+use crate::primitive::Shape;
+use crate::{Aabb, Interval};
+
+/// Which operands of a min/max can win over a box.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Choice {
+    /// Either may win.
+    Both,
+    /// Only the first operand can win.
+    Left,
+    /// Only the second operand can win.
+    Right,
+}
+
+/// Reusable buffers for interval evaluation; holds the choices of the last evaluation.
+#[derive(Debug, Default, Clone)]
+pub struct IntervalScratch {
+    slots: Vec<Interval>,
+    choices: Vec<Choice>,
+    scale: f64,
+}
+
+/// The outcome of pruning a program over a box.
+#[derive(Debug, Clone)]
+pub enum Pruned {
+    /// The whole box is inside the solid.
+    Inside,
+    /// The whole box is outside the solid.
+    Outside,
+    /// The surface may cross the box; the program valid in it (shorter when branches were cut).
+    Surface(Program),
+}
+
+/// Safety margin for comparisons between f64 intervals whose values will be evaluated in f32:
+/// a few hundred single-precision ulps of the magnitudes involved.
+pub fn margin(scale: f64, a: f64, b: f64) -> f64 {
+    let m = scale + a.abs().min(1e30) + b.abs().min(1e30);
+    3e-5 * m
+}
+
+impl Program {
+    /// Interval of the field over `b`; the choices are left in `s` for [`Program::prune`].
+    pub fn interval_with(&self, b: &Aabb, s: &mut IntervalScratch) -> Interval {
+        let n = self.instrs.len();
+        s.slots.clear();
+        s.slots.resize(n, Interval::point(0.0));
+        s.choices.clear();
+        s.choices.resize(n, Choice::Both);
+        s.scale = 1.0 + b.min.abs().max(b.max.abs()).max_element().min(1e30);
+        for (i, ins) in self.instrs.iter().enumerate() {
+            let v = match *ins {
+                Instr::Leaf { prim, frame } => {
+                    let f = &self.frames[frame as usize];
+                    self.primitives[prim as usize]
+                        .interval(&f.apply_box(b))
+                        .scale(f.sigma)
+                }
+                Instr::Min(a, c) => {
+                    let (x, y) = (s.slots[a as usize], s.slots[c as usize]);
+                    s.choices[i] = choose(x, y, s.scale, true);
+                    x.min(y)
+                }
+                Instr::Max(a, c) => {
+                    let (x, y) = (s.slots[a as usize], s.slots[c as usize]);
+                    s.choices[i] = choose(x, y, s.scale, false);
+                    x.max(y)
+                }
+                Instr::Neg(a) => -s.slots[a as usize],
+                Instr::Const(c) => Interval::point(c.value()),
+            };
+            s.slots[i] = v;
+        }
+        s.slots[n - 1]
+    }
+
+    /// Interval of the field over `b`.
+    pub fn interval(&self, b: &Aabb) -> Interval {
+        self.interval_with(b, &mut IntervalScratch::default())
+    }
+
+    /// The program with the branches that cannot win (per the last [`Program::interval_with`]
+    /// in `s`) removed, or `None` when nothing can be removed.
+    pub fn prune(&self, s: &IntervalScratch) -> Option<Program> {
+        if !s.choices.iter().any(|c| *c != Choice::Both) {
+            return None;
+        }
+        let mut map = vec![0u32; self.instrs.len()];
+        let mut out: Vec<Instr> = Vec::with_capacity(self.instrs.len());
+        for (i, ins) in self.instrs.iter().enumerate() {
+            let m = |v: u32| map[v as usize];
+            let new = match (*ins, s.choices[i]) {
+                (Instr::Min(a, _) | Instr::Max(a, _), Choice::Left) => {
+                    map[i] = m(a);
+                    continue;
+                }
+                (Instr::Min(_, b) | Instr::Max(_, b), Choice::Right) => {
+                    map[i] = m(b);
+                    continue;
+                }
+                (Instr::Min(a, b), _) => Instr::Min(m(a), m(b)),
+                (Instr::Max(a, b), _) => Instr::Max(m(a), m(b)),
+                (Instr::Neg(a), _) => Instr::Neg(m(a)),
+                (other, _) => other,
+            };
+            out.push(new);
+            map[i] = (out.len() - 1) as u32;
+        }
+        let result = map[self.instrs.len() - 1];
+        let (instrs, _) = compact(&out, result);
+        Some(Program::from_parts(
+            instrs,
+            self.primitives.clone(),
+            self.frames.clone(),
+        ))
+    }
+
+    /// Classifies the box (with the f32 safety margin) and prunes the program for it.
+    pub fn prune_for_box(&self, b: &Aabb, s: &mut IntervalScratch) -> Pruned {
+        let iv = self.interval_with(b, s);
+        let m = margin(s.scale, iv.lo, iv.hi);
+        if iv.hi < -m {
+            Pruned::Inside
+        } else if iv.lo > m {
+            Pruned::Outside
+        } else {
+            Pruned::Surface(self.prune(s).unwrap_or_else(|| self.clone()))
+        }
+    }
+}
+
+fn choose(x: Interval, y: Interval, scale: f64, is_min: bool) -> Choice {
+    // For min, x always wins when x.hi < y.lo (by the margin); for max when x.lo > y.hi.
+    let (x_wins, y_wins) = if is_min {
+        (
+            x.hi < y.lo - margin(scale, x.hi, y.lo),
+            y.hi < x.lo - margin(scale, y.hi, x.lo),
+        )
+    } else {
+        (
+            x.lo > y.hi + margin(scale, x.lo, y.hi),
+            y.lo > x.hi + margin(scale, y.lo, x.hi),
+        )
+    };
+    if x_wins {
+        Choice::Left
+    } else if y_wins {
+        Choice::Right
+    } else {
+        Choice::Both
+    }
+}

@@ -1,0 +1,213 @@
+//! Lowering a [`Solid`] to a [`Program`] with a work list: transforms folded into per-leaf frames,
+//! identical subtrees and equal leaves shared, trivial instructions simplified on the way.
+
+use super::{Frame, Infinity, Instr, Program};
+use crate::primitive::{Primitive, Shape};
+use crate::solid::{NodeKind, Solid};
+use std::collections::HashMap;
+
+/// Bucket key for leaves that may be equal: frame, kind and bounding box bits.
+type LeafKey = (u32, &'static str, [u64; 6]);
+
+#[derive(Default)]
+struct Lowerer {
+    instrs: Vec<Instr>,
+    primitives: Vec<Primitive>,
+    frames: Vec<Frame>,
+    frame_ids: HashMap<[u64; 13], u32>,
+    instr_ids: HashMap<Instr, u32>,
+    /// (node address, frame) → value: a shared subtree under the same frame is lowered once.
+    memo: HashMap<(usize, u32), u32>,
+    leaves: HashMap<LeafKey, Vec<u32>>,
+}
+
+impl Lowerer {
+    fn frame_id(&mut self, f: Frame) -> u32 {
+        let next = self.frames.len() as u32;
+        let id = *self.frame_ids.entry(f.key()).or_insert(next);
+        if id == next {
+            self.frames.push(f);
+        }
+        id
+    }
+
+    /// Appends an instruction, or returns an existing equal one, after local simplification.
+    fn emit(&mut self, i: Instr) -> u32 {
+        let konst = |s: &Self, v: u32| match s.instrs[v as usize] {
+            Instr::Const(c) => Some(c),
+            _ => None,
+        };
+        match i {
+            Instr::Min(a, b) | Instr::Max(a, b) if a == b => return a,
+            Instr::Min(a, b) if konst(self, a) == Some(Infinity::Positive) => return b,
+            Instr::Min(a, b) if konst(self, b) == Some(Infinity::Positive) => return a,
+            Instr::Max(a, b) if konst(self, a) == Some(Infinity::Negative) => return b,
+            Instr::Max(a, b) if konst(self, b) == Some(Infinity::Negative) => return a,
+            Instr::Neg(a) => {
+                if let Instr::Neg(x) = self.instrs[a as usize] {
+                    return x;
+                }
+            }
+            _ => {}
+        }
+        // Idempotence: min(min(x, y), y) = min(x, y), and the same for max.
+        if let Instr::Min(a, b) | Instr::Max(a, b) = i {
+            let is_min = matches!(i, Instr::Min(..));
+            for (v, w) in [(a, b), (b, a)] {
+                match self.instrs[v as usize] {
+                    Instr::Min(x, y) if is_min && (x == w || y == w) => return v,
+                    Instr::Max(x, y) if !is_min && (x == w || y == w) => return v,
+                    _ => {}
+                }
+            }
+        }
+        if let Some(&v) = self.instr_ids.get(&i) {
+            return v;
+        }
+        self.instrs.push(i);
+        let v = (self.instrs.len() - 1) as u32;
+        self.instr_ids.insert(i, v);
+        v
+    }
+
+    fn leaf(&mut self, p: &Primitive, frame: u32) -> u32 {
+        let b = p.bbox();
+        let key = (
+            frame,
+            p.name(),
+            [b.min.x, b.min.y, b.min.z, b.max.x, b.max.y, b.max.z].map(f64::to_bits),
+        );
+        let bucket = self.leaves.entry(key).or_default();
+        for &v in bucket.iter() {
+            if let Instr::Leaf { prim, .. } = self.instrs[v as usize]
+                && self.primitives[prim as usize] == *p
+            {
+                return v;
+            }
+        }
+        self.primitives.push(p.clone());
+        let prim = (self.primitives.len() - 1) as u32;
+        let v = self.emit(Instr::Leaf { prim, frame });
+        self.leaves.get_mut(&key).expect("bucket").push(v);
+        v
+    }
+
+    /// The value of a node whose children's values are `c`.
+    fn combine(&mut self, kind: &NodeKind, frame: u32, c: &[u32]) -> u32 {
+        match kind {
+            NodeKind::Primitive(p) => self.leaf(p, frame),
+            NodeKind::Union | NodeKind::Transform(_) => {
+                self.fold(c, Instr::Min, Infinity::Positive)
+            }
+            NodeKind::Intersection => self.fold(c, Instr::Max, Infinity::Negative),
+            NodeKind::Difference => {
+                let Some((&first, rest)) = c.split_first() else {
+                    return self.emit(Instr::Const(Infinity::Positive));
+                };
+                rest.iter().fold(first, |acc, &x| {
+                    let n = self.emit(Instr::Neg(x));
+                    self.emit(Instr::Max(acc, n))
+                })
+            }
+        }
+    }
+
+    fn fold(&mut self, c: &[u32], op: fn(u32, u32) -> Instr, empty: Infinity) -> u32 {
+        match c.split_first() {
+            None => self.emit(Instr::Const(empty)),
+            Some((&first, rest)) => rest.iter().fold(first, |acc, &x| self.emit(op(acc, x))),
+        }
+    }
+}
+
+impl Solid {
+    /// Lowers the tree to a [`Program`] (no recursion; shared subtrees lowered once).
+    pub fn lower(&self) -> Program {
+        let mut l = Lowerer::default();
+        let world = l.frame_id(Frame::identity());
+        // Work list of (node, frame, children visited); values of finished children on `done`.
+        let mut stack: Vec<(&Solid, u32, usize)> = vec![(self, world, 0)];
+        let mut done: Vec<u32> = Vec::new();
+        while let Some(top) = stack.last_mut() {
+            let (solid, frame, next) = *top;
+            let key = (std::sync::Arc::as_ptr(&solid.0) as usize, frame);
+            if next == 0
+                && let Some(&v) = l.memo.get(&key)
+            {
+                stack.pop();
+                done.push(v);
+                continue;
+            }
+            let leaf = matches!(solid.kind(), NodeKind::Primitive(_));
+            if let Some(child) = solid.children().get(next).filter(|_| !leaf) {
+                top.1 = frame;
+                top.2 += 1;
+                let child_frame = match solid.kind() {
+                    NodeKind::Transform(t) => {
+                        let f = l.frames[frame as usize].then(t);
+                        l.frame_id(f)
+                    }
+                    _ => frame,
+                };
+                stack.push((child, child_frame, 0));
+                continue;
+            }
+            stack.pop();
+            let n = if leaf { 0 } else { solid.children().len() };
+            let start = done.len() - n;
+            let children: Vec<u32> = done.split_off(start);
+            let v = l.combine(solid.kind(), frame, &children);
+            l.memo.insert(key, v);
+            done.push(v);
+        }
+        let result = done.pop().expect("root value");
+        let (instrs, result) = compact(&l.instrs, result);
+        Program::from_parts(
+            instrs,
+            std::sync::Arc::new(l.primitives),
+            std::sync::Arc::new(l.frames),
+        )
+        .with_result_last(result)
+    }
+}
+
+/// Keeps only instructions the result depends on (in order) and renumbers operands; returns the
+/// new list and the result's new index.
+pub(crate) fn compact(instrs: &[Instr], result: u32) -> (Vec<Instr>, u32) {
+    let mut live = vec![false; instrs.len()];
+    live[result as usize] = true;
+    for i in (0..=result as usize).rev() {
+        if !live[i] {
+            continue;
+        }
+        let (ops, k) = super::regalloc::operands(&instrs[i]);
+        for &o in &ops[..k] {
+            live[o as usize] = true;
+        }
+    }
+    let mut new_index = vec![u32::MAX; instrs.len()];
+    let mut out = Vec::new();
+    for (i, ins) in instrs.iter().enumerate().take(result as usize + 1) {
+        if !live[i] {
+            continue;
+        }
+        let r = |v: u32| new_index[v as usize];
+        out.push(match *ins {
+            Instr::Min(a, b) => Instr::Min(r(a), r(b)),
+            Instr::Max(a, b) => Instr::Max(r(a), r(b)),
+            Instr::Neg(a) => Instr::Neg(r(a)),
+            other => other,
+        });
+        new_index[i] = (out.len() - 1) as u32;
+    }
+    let res = new_index[result as usize];
+    (out, res)
+}
+
+impl Program {
+    /// Checks the result is the last instruction (compaction guarantees it).
+    fn with_result_last(self, result: u32) -> Self {
+        debug_assert_eq!(result as usize + 1, self.instrs.len());
+        self
+    }
+}

@@ -1,0 +1,126 @@
+//! The tree lowered to a flat program: the form every evaluator runs.
+//!
+//! [`Program`] is a list of instructions in SSA form (instruction `i` defines value `i`, operands are
+//! earlier values). Lowering ([`lower`]) folds every chain of transforms into one inverse affine map
+//! per leaf ([`Frame`]), shares identical subtrees (the same node under the same frame, and
+//! structurally equal leaves) and turns n-ary Booleans into binary `Min`/`Max` with `Neg` for
+//! subtrahends. Registers are allocated by liveness so batch evaluation touches few buffers.
+//!
+//! Evaluators: [`batch`] (f32, structure of arrays, chunks of [`CHUNK`] points, loops written for
+//! auto-vectorisation), [`scalar`] (f64 value and gradient at one point), and [`interval`] (f64
+//! interval over a box, recording which operand of each min/max can win so a box gets a shorter
+//! program valid inside it).
+
+pub mod batch;
+mod frame;
+pub mod interval;
+mod lower;
+mod regalloc;
+pub mod scalar;
+
+pub use batch::{BatchScratch, CHUNK};
+pub use frame::Frame;
+pub use interval::{Choice, IntervalScratch, Pruned};
+
+use crate::primitive::Primitive;
+use std::sync::Arc;
+
+/// One instruction; its result is the value with the instruction's index.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum Instr {
+    /// Primitive `prim` evaluated in frame `frame`, scaled by the frame's distance factor.
+    Leaf {
+        /// Index into [`Program::primitives`].
+        prim: u32,
+        /// Index into [`Program::frames`].
+        frame: u32,
+    },
+    /// `min(a, b)`.
+    Min(u32, u32),
+    /// `max(a, b)`.
+    Max(u32, u32),
+    /// `−a`.
+    Neg(u32),
+    /// The constant `+∞` (empty union) or `−∞` (empty intersection).
+    Const(Infinity),
+}
+
+/// The two infinite constants.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum Infinity {
+    /// `+∞`: nothing is inside.
+    Positive,
+    /// `−∞`: everything is inside.
+    Negative,
+}
+
+impl Infinity {
+    /// As a number.
+    pub fn value(self) -> f64 {
+        match self {
+            Infinity::Positive => f64::INFINITY,
+            Infinity::Negative => f64::NEG_INFINITY,
+        }
+    }
+}
+
+/// A lowered solid.
+#[derive(Debug, Clone)]
+pub struct Program {
+    pub(crate) instrs: Vec<Instr>,
+    /// Shared by a program and every program pruned from it.
+    pub(crate) primitives: Arc<Vec<Primitive>>,
+    pub(crate) frames: Arc<Vec<Frame>>,
+    /// Register of each instruction's result (registers are reused once values are dead).
+    pub(crate) regs: Vec<u32>,
+    pub(crate) register_count: usize,
+}
+
+impl Program {
+    /// The instructions; the last one is the result.
+    pub fn instrs(&self) -> &[Instr] {
+        &self.instrs
+    }
+
+    /// Number of instructions.
+    pub fn len(&self) -> usize {
+        self.instrs.len()
+    }
+
+    /// Never true for a lowered solid.
+    pub fn is_empty(&self) -> bool {
+        self.instrs.is_empty()
+    }
+
+    /// Number of leaf instructions (primitive evaluations).
+    pub fn leaf_count(&self) -> usize {
+        self.instrs
+            .iter()
+            .filter(|i| matches!(i, Instr::Leaf { .. }))
+            .count()
+    }
+
+    /// Registers a batch evaluation needs.
+    pub fn register_count(&self) -> usize {
+        self.register_count
+    }
+
+    /// Builds a program from instructions (in SSA order, result last) and allocates registers.
+    pub(crate) fn from_parts(
+        instrs: Vec<Instr>,
+        primitives: Arc<Vec<Primitive>>,
+        frames: Arc<Vec<Frame>>,
+    ) -> Self {
+        let (regs, register_count) = regalloc::allocate(&instrs);
+        Self {
+            instrs,
+            primitives,
+            frames,
+            regs,
+            register_count,
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests;
