@@ -8,7 +8,8 @@ use serde_json::json;
 use solidkit_kernel::{Aabb, Solid};
 use solidkit_meshing::TopologyReport;
 use solidkit_meshing::io::write_mesh;
-use solidkit_meshing::marching_cubes::{GridSpec, mesh_field};
+use solidkit_meshing::marching_cubes::GridSpec;
+use solidkit_meshing::octree::{SparseOptions, mesh_sparse};
 use std::time::Instant;
 
 /// Meshes the input and prints the report; exit code 0.
@@ -38,8 +39,9 @@ pub fn run(a: &MeshArgs) -> Result<u8> {
     let spec = GridSpec::for_bounds(&bounds, a.resolution)
         .map_err(|e| anyhow!("{}: {e}", a.input.display()))?;
     let start = Instant::now();
-    let mesh = match a.method {
-        Method::Mc => mesh_field(&solid.compile(), spec),
+    let program = solid.compile();
+    let (mesh, stats) = match a.method {
+        Method::Mc => mesh_sparse(&program, spec, &SparseOptions::default())?,
     };
     let time_s = start.elapsed().as_secs_f64();
     let r = TopologyReport::of(&mesh);
@@ -52,6 +54,8 @@ pub fn run(a: &MeshArgs) -> Result<u8> {
             ("resolution", json!(a.resolution)),
             ("cells", json!(spec.cells)),
             ("method", json!("mc")),
+            ("samples_evaluated", json!(stats.samples_evaluated)),
+            ("program_length", json!(program.len())),
         ];
         println!("{}", report::to_json(&r, &extra)?);
     } else {

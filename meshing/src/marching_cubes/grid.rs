@@ -2,7 +2,8 @@
 
 use glam::DVec3;
 use rayon::prelude::*;
-use solidkit_kernel::{Aabb, Field};
+use solidkit_kernel::program::BatchScratch;
+use solidkit_kernel::{Aabb, Field, Program};
 
 /// A uniform grid of cubic cells: `cells[a]` cells (so `cells[a] + 1` samples) along axis `a`.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -94,6 +95,12 @@ impl GridSpec {
         self.origin + DVec3::new(i as f64, j as f64, k as f64) * self.cell
     }
 
+    /// Single-precision coordinate of sample index `i` along `axis`, as every sampler computes it
+    /// (so the dense and sparse paths evaluate at bit-identical points).
+    pub fn coordinate(&self, axis: usize, i: usize) -> f32 {
+        (self.origin[axis] + i as f64 * self.cell) as f32
+    }
+
     /// Linear index of sample `(i, j, k)` (x fastest).
     pub fn index(&self, i: usize, j: usize, k: usize) -> usize {
         let [sx, sy, _] = self.samples();
@@ -101,42 +108,68 @@ impl GridSpec {
     }
 }
 
-/// Field values at every sample of a grid.
+/// Field values at every sample of a grid, in single precision (what the batch evaluator
+/// produces; vertex interpolation is done in double precision from these values).
 #[derive(Debug, Clone)]
 pub struct SampleGrid {
     /// The grid.
     pub spec: GridSpec,
     /// Values, x fastest, then y, then z.
-    pub values: Vec<f64>,
+    pub values: Vec<f32>,
 }
 
 impl SampleGrid {
     /// Samples `field` at every grid point, one z-slice per parallel task.
     pub fn sample(field: &impl Field, spec: GridSpec) -> Self {
         let [sx, sy, _] = spec.samples();
-        let mut values = vec![0.0; spec.sample_count()];
+        let mut values = vec![0.0f32; spec.sample_count()];
         values
             .par_chunks_mut(sx * sy)
             .enumerate()
             .for_each(|(k, slice)| {
                 let mut row = vec![DVec3::ZERO; sx];
+                let mut row_values = vec![0.0; sx];
                 for (j, out) in slice.chunks_mut(sx).enumerate() {
                     for (i, p) in row.iter_mut().enumerate() {
                         *p = spec.point(i, j, k);
                     }
-                    field.values(&row, out);
+                    field.values(&row, &mut row_values);
+                    for (o, v) in out.iter_mut().zip(&row_values) {
+                        *o = *v as f32;
+                    }
+                }
+            });
+        Self { spec, values }
+    }
+
+    /// Samples a lowered solid at every grid point with the full program (the dense path: no
+    /// pruning), one z-slice per parallel task.
+    pub fn sample_program(program: &Program, spec: GridSpec) -> Self {
+        let [sx, sy, _] = spec.samples();
+        let mut values = vec![0.0f32; spec.sample_count()];
+        values
+            .par_chunks_mut(sx * sy)
+            .enumerate()
+            .for_each(|(k, slice)| {
+                let mut scratch = BatchScratch::new(program);
+                let x: Vec<f32> = (0..sx).map(|i| spec.coordinate(0, i)).collect();
+                let z = vec![spec.coordinate(2, k); sx];
+                let mut y = vec![0f32; sx];
+                for (j, out) in slice.chunks_mut(sx).enumerate() {
+                    y.fill(spec.coordinate(1, j));
+                    program.eval_many(&x, &y, &z, out, &mut scratch);
                 }
             });
         Self { spec, values }
     }
 
     /// Wraps values already computed (x fastest); `None` if the count does not match the grid.
-    pub fn from_values(spec: GridSpec, values: Vec<f64>) -> Option<Self> {
+    pub fn from_values(spec: GridSpec, values: Vec<f32>) -> Option<Self> {
         (values.len() == spec.sample_count()).then_some(Self { spec, values })
     }
 
     /// Value at sample `(i, j, k)`.
-    pub fn at(&self, i: usize, j: usize, k: usize) -> f64 {
+    pub fn at(&self, i: usize, j: usize, k: usize) -> f32 {
         self.values[self.spec.index(i, j, k)]
     }
 }

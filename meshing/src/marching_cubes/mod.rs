@@ -10,7 +10,7 @@ pub mod polygonize;
 pub mod table;
 
 pub use grid::{GridError, GridSpec, SampleGrid};
-pub use polygonize::{EDGE_MARGIN, inside, polygonize_into};
+pub use polygonize::{EDGE_MARGIN, edge_vertex, inside, polygonize_into};
 
 use crate::IndexedMesh;
 use solidkit_kernel::Field;

@@ -19,8 +19,25 @@ const NONE: u32 = u32::MAX;
 
 /// The inside test for samples (the one fixed rule for exact zeros: outside).
 #[inline]
-pub fn inside(v: f64) -> bool {
+pub fn inside(v: f32) -> bool {
     v < 0.0
+}
+
+/// The vertex on the edge from `pa` (value `va`) to `pb` (value `vb`), or `None` when the edge
+/// does not change sign. Shared by every polygonizer, so equal samples give equal vertices.
+#[inline]
+pub fn edge_vertex(pa: DVec3, va: f32, pb: DVec3, vb: f32) -> Option<DVec3> {
+    if inside(va) == inside(vb) {
+        return None;
+    }
+    let (va, vb) = (va as f64, vb as f64);
+    let t = va / (va - vb);
+    let t = if t.is_finite() {
+        t.clamp(EDGE_MARGIN, 1.0 - EDGE_MARGIN)
+    } else {
+        0.5
+    };
+    Some(pa + (pb - pa) * t)
 }
 
 /// Crossing vertices owned by one sample slice `k`: edges along x and y within the slice, and
@@ -33,17 +50,12 @@ struct SliceVertices {
 
 fn crossing(g: &SampleGrid, a: (usize, usize, usize), b: (usize, usize, usize)) -> Option<DVec3> {
     let (va, vb) = (g.at(a.0, a.1, a.2), g.at(b.0, b.1, b.2));
-    if inside(va) == inside(vb) {
-        return None;
-    }
-    let t = va / (va - vb);
-    let t = if t.is_finite() {
-        t.clamp(EDGE_MARGIN, 1.0 - EDGE_MARGIN)
-    } else {
-        0.5
-    };
-    let (pa, pb) = (g.spec.point(a.0, a.1, a.2), g.spec.point(b.0, b.1, b.2));
-    Some(pa + (pb - pa) * t)
+    edge_vertex(
+        g.spec.point(a.0, a.1, a.2),
+        va,
+        g.spec.point(b.0, b.1, b.2),
+        vb,
+    )
 }
 
 fn slice_vertices(g: &SampleGrid, k: usize) -> SliceVertices {

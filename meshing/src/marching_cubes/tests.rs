@@ -102,11 +102,11 @@ fn check(g: &SampleGrid, what: &str) -> TopologyReport {
 #[test]
 fn all_256_patterns_alone_are_closed_spheres() {
     for mask in 0..256usize {
-        let mut values = vec![1.0; 64];
+        let mut values = vec![1.0f32; 64];
         let g = spec(3);
         for c in 0..8 {
             let (i, j, k) = (1 + (c & 1), 1 + (c >> 1 & 1), 1 + (c >> 2 & 1));
-            let v = 0.2 + 0.1 * c as f64;
+            let v = 0.2 + 0.1 * c as f32;
             values[g.index(i, j, k)] = if mask >> c & 1 == 1 { -v } else { v };
         }
         let grid = SampleGrid::from_values(g, values).unwrap();
@@ -129,7 +129,7 @@ fn ten_thousand_random_neighbourhoods_are_closed_manifolds() {
     let mut rng = Rng(0x5eed_1234_abcd_0001);
     for case in 0..10_000 {
         let g = spec(5);
-        let mut values = vec![1.0; g.sample_count()];
+        let mut values = vec![1.0f32; g.sample_count()];
         for k in 1..5 {
             for j in 1..5 {
                 for i in 1..5 {
@@ -137,7 +137,7 @@ fn ten_thousand_random_neighbourhoods_are_closed_manifolds() {
                     values[g.index(i, j, k)] = if r < 0.04 {
                         0.0 // exact zeros follow the fixed rule (outside)
                     } else {
-                        let m = 0.01 + rng.unit();
+                        let m = (0.01 + rng.unit()) as f32;
                         if rng.next() & 1 == 0 { -m } else { m }
                     };
                 }

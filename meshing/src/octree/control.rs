@@ -1,0 +1,100 @@
+//! Options and controls of sparse meshing: brick size, cancellation, progress, statistics.
+
+use std::sync::Arc;
+use std::sync::atomic::{AtomicBool, Ordering};
+
+/// A cancellation flag shared between the caller and a running mesher.
+#[derive(Debug, Clone, Default)]
+pub struct CancelToken(Arc<AtomicBool>);
+
+impl CancelToken {
+    /// A token not yet cancelled.
+    pub fn new() -> Self {
+        Self::default()
+    }
+
+    /// Asks the mesher to stop as soon as it can.
+    pub fn cancel(&self) {
+        self.0.store(true, Ordering::Relaxed);
+    }
+
+    /// True once [`CancelToken::cancel`] was called.
+    pub fn is_cancelled(&self) -> bool {
+        self.0.load(Ordering::Relaxed)
+    }
+}
+
+/// The mesher stopped because its token was cancelled.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, thiserror::Error)]
+#[error("meshing was cancelled")]
+pub struct Cancelled;
+
+/// A progress report: `done` of `total` units of `stage` are finished.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Progress {
+    /// `"octree"` (levels) or `"bricks"`.
+    pub stage: &'static str,
+    /// Units finished.
+    pub done: usize,
+    /// Units in all.
+    pub total: usize,
+}
+
+/// A progress callback (called from worker threads).
+pub type ProgressFn = Arc<dyn Fn(Progress) + Send + Sync>;
+
+/// Options of sparse meshing.
+#[derive(Clone)]
+pub struct SparseOptions {
+    /// Cells per side of a leaf brick (a power of two; 8 by default).
+    pub brick_cells: usize,
+    /// Stops the mesher when cancelled.
+    pub cancel: Option<CancelToken>,
+    /// Receives progress reports.
+    pub progress: Option<ProgressFn>,
+}
+
+impl Default for SparseOptions {
+    fn default() -> Self {
+        Self {
+            brick_cells: 8,
+            cancel: None,
+            progress: None,
+        }
+    }
+}
+
+impl std::fmt::Debug for SparseOptions {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.debug_struct("SparseOptions")
+            .field("brick_cells", &self.brick_cells)
+            .field("cancel", &self.cancel)
+            .field("progress", &self.progress.is_some())
+            .finish()
+    }
+}
+
+impl SparseOptions {
+    pub(crate) fn is_cancelled(&self) -> bool {
+        self.cancel.as_ref().is_some_and(CancelToken::is_cancelled)
+    }
+
+    pub(crate) fn report(&self, p: Progress) {
+        if let Some(f) = &self.progress {
+            f(p);
+        }
+    }
+}
+
+/// What sparse meshing did.
+#[derive(Debug, Clone, Default, PartialEq, Eq)]
+pub struct MeshStats {
+    /// Octree boxes whose interval was evaluated.
+    pub boxes_evaluated: u64,
+    /// Leaf bricks the surface may cross.
+    pub surface_bricks: usize,
+    /// Grid samples evaluated (points).
+    pub samples_evaluated: u64,
+    /// Sum over leaf bricks of their pruned program length (for the mean).
+    pub leaf_instructions: u64,
+}

@@ -1,0 +1,96 @@
+//! Sparse meshing: an octree over the sample grid culls boxes the field's interval shows to be
+//! wholly inside or outside, prunes the program for the boxes the surface may cross, and runs
+//! marching cubes only in the surviving leaf bricks. Cost grows with the surface, not the volume.
+//!
+//! The output is identical, bit for bit, to dense marching cubes over the same grid with the full
+//! program ([`mesh_dense`]), whatever the number of threads: pruned programs give the same f32
+//! values inside their boxes, culled boxes contain no sign change, and vertices and triangles are
+//! numbered by sorting on grid keys in the dense path's order.
+//!
+//! [`subdivide`] builds the octree level by level (parallel within a level); [`brick`] samples and
+//! triangulates one leaf; [`assemble`] merges the bricks into a mesh.
+
+mod assemble;
+mod brick;
+mod control;
+mod subdivide;
+
+pub use control::{CancelToken, Cancelled, MeshStats, Progress, SparseOptions};
+
+use crate::IndexedMesh;
+use crate::marching_cubes::{GridSpec, SampleGrid, polygonize_into};
+use crate::sink::MeshSink;
+use rayon::prelude::*;
+use solidkit_kernel::Program;
+use std::sync::atomic::Ordering;
+
+/// Meshes the zero set of `program` over `spec` with the sparse octree.
+pub fn mesh_sparse(
+    program: &Program,
+    spec: GridSpec,
+    opts: &SparseOptions,
+) -> Result<(IndexedMesh, MeshStats), Cancelled> {
+    let mut mesh = IndexedMesh::default();
+    let stats = mesh_sparse_into(program, spec, opts, &mut mesh)?;
+    Ok((mesh, stats))
+}
+
+/// Meshes the zero set of `program` over `spec` with the sparse octree into `sink`.
+pub fn mesh_sparse_into(
+    program: &Program,
+    spec: GridSpec,
+    opts: &SparseOptions,
+    sink: &mut impl MeshSink,
+) -> Result<MeshStats, Cancelled> {
+    let mut stats = MeshStats::default();
+    let t0 = std::time::Instant::now();
+    let leaves = subdivide::surface_bricks(program, &spec, opts, &mut stats)?;
+    let t1 = std::time::Instant::now();
+    stats.surface_bricks = leaves.len();
+    let done = std::sync::atomic::AtomicUsize::new(0);
+    let total = leaves.len();
+    let outputs: Vec<brick::BrickOutput> = leaves
+        .par_iter()
+        .map(|leaf| {
+            if opts.is_cancelled() {
+                return brick::BrickOutput::default();
+            }
+            let out = brick::process(leaf, &spec);
+            let n = done.fetch_add(1, Ordering::Relaxed) + 1;
+            opts.report(Progress {
+                stage: "bricks",
+                done: n,
+                total,
+            });
+            out
+        })
+        .collect();
+    if opts.is_cancelled() {
+        return Err(Cancelled);
+    }
+    stats.samples_evaluated = outputs.iter().map(|o| o.samples).sum();
+    let t2 = std::time::Instant::now();
+    assemble::assemble(outputs, sink);
+    if std::env::var_os("SOLIDKIT_TRACE").is_some() {
+        let t3 = std::time::Instant::now();
+        eprintln!(
+            "octree {:?} bricks {:?} assemble {:?}",
+            t1 - t0,
+            t2 - t1,
+            t3 - t2
+        );
+    }
+    Ok(stats)
+}
+
+/// Dense marching cubes with the full program at every sample: the reference the sparse path
+/// must reproduce exactly.
+pub fn mesh_dense(program: &Program, spec: GridSpec) -> IndexedMesh {
+    let samples = SampleGrid::sample_program(program, spec);
+    let mut mesh = IndexedMesh::default();
+    polygonize_into(&samples, &mut mesh);
+    mesh
+}
+
+#[cfg(test)]
+mod tests;
