@@ -32,48 +32,67 @@ pub enum GridError {
     /// A resolution of zero.
     #[error("resolution must be at least 1")]
     ZeroResolution,
-    /// More samples than this build will allocate.
-    #[error("grid of {cells:?} cells is too large (at most {limit} samples)")]
+    /// More cells along an axis than vertex keys can address.
+    #[error("grid of {cells:?} cells is too large (at most {limit} cells per axis)")]
     TooLarge {
         /// Cells per axis requested.
         cells: [usize; 3],
-        /// The sample limit.
+        /// The per-axis limit.
         limit: usize,
     },
 }
 
-/// Largest number of samples a dense grid may hold (about 8 GiB of values and edge tables).
-pub const MAX_SAMPLES: usize = 1 << 29;
+/// Most cells along one axis (vertex and triangle keys pack sample indices in 20 bits).
+pub const MAX_CELLS_PER_AXIS: usize = (1 << 20) - 2;
 
 impl GridSpec {
     /// A grid over `bounds` with `resolution` cells along its longest side, padded by one cell on
     /// every side so a solid touching its bounds still meshes closed.
     pub fn for_bounds(bounds: &Aabb, resolution: usize) -> Result<Self, GridError> {
+        let cell = Self::cell_size(bounds, resolution)?;
+        let count = |extent: f64| ((extent / cell - 1e-9).ceil().max(1.0) as usize) + 2;
+        let size = bounds.size();
+        let cells = [count(size.x), count(size.y), count(size.z)];
+        let half = DVec3::new(cells[0] as f64, cells[1] as f64, cells[2] as f64) * (cell * 0.5);
+        Self::checked(Self {
+            origin: bounds.center() - half,
+            cell,
+            cells,
+        })
+    }
+
+    /// A grid of `resolution` cells along the longest side of `bounds`, starting exactly at
+    /// `bounds.min`, without padding (the benchmark convention: 256 cells over [-1, 1]³).
+    pub fn covering(bounds: &Aabb, resolution: usize) -> Result<Self, GridError> {
+        let cell = Self::cell_size(bounds, resolution)?;
+        let size = bounds.size();
+        let cells = [0, 1, 2].map(|a| (size[a] / cell - 1e-9).ceil().max(1.0) as usize);
+        Self::checked(Self {
+            origin: bounds.min,
+            cell,
+            cells,
+        })
+    }
+
+    fn cell_size(bounds: &Aabb, resolution: usize) -> Result<f64, GridError> {
         if resolution == 0 {
             return Err(GridError::ZeroResolution);
         }
-        let size = bounds.size();
-        if !bounds.is_finite() || size.max_element().is_nan() || size.max_element() <= 0.0 {
+        let longest = bounds.size().max_element();
+        if !bounds.is_finite() || longest.is_nan() || longest <= 0.0 {
             return Err(GridError::BadBounds {
                 min: bounds.min.to_array(),
                 max: bounds.max.to_array(),
             });
         }
-        let cell = size.max_element() / resolution as f64;
-        let count = |extent: f64| ((extent / cell - 1e-9).ceil().max(1.0) as usize) + 2;
-        let cells = [count(size.x), count(size.y), count(size.z)];
-        let origin = bounds.center()
-            - DVec3::new(cells[0] as f64, cells[1] as f64, cells[2] as f64) * (cell * 0.5);
-        let spec = Self {
-            origin,
-            cell,
-            cells,
-        };
-        let samples = spec.sample_count();
-        if samples > MAX_SAMPLES || samples == 0 {
+        Ok(longest / resolution as f64)
+    }
+
+    fn checked(spec: Self) -> Result<Self, GridError> {
+        if spec.cells.iter().any(|&c| c > MAX_CELLS_PER_AXIS) {
             return Err(GridError::TooLarge {
-                cells,
-                limit: MAX_SAMPLES,
+                cells: spec.cells,
+                limit: MAX_CELLS_PER_AXIS,
             });
         }
         Ok(spec)

@@ -79,6 +79,11 @@ impl SparseOptions {
         self.cancel.as_ref().is_some_and(CancelToken::is_cancelled)
     }
 
+    /// The brick size in cells (a power of two).
+    pub(crate) fn brick_size(&self) -> usize {
+        self.brick_cells.max(1).next_power_of_two()
+    }
+
     pub(crate) fn report(&self, p: Progress) {
         if let Some(f) = &self.progress {
             f(p);

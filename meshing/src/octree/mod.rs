@@ -55,7 +55,7 @@ pub fn mesh_sparse_into(
             if opts.is_cancelled() {
                 return brick::BrickOutput::default();
             }
-            let out = brick::process(leaf, &spec);
+            let out = brick::process(leaf, &spec, opts.brick_size());
             let n = done.fetch_add(1, Ordering::Relaxed) + 1;
             opts.report(Progress {
                 stage: "bricks",
@@ -70,7 +70,7 @@ pub fn mesh_sparse_into(
     }
     stats.samples_evaluated = outputs.iter().map(|o| o.samples).sum();
     let t2 = std::time::Instant::now();
-    assemble::assemble(outputs, sink);
+    assemble::assemble(outputs, spec.cells, opts.brick_size(), sink);
     if std::env::var_os("SOLIDKIT_TRACE").is_some() {
         let t3 = std::time::Instant::now();
         eprintln!(

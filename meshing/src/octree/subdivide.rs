@@ -40,7 +40,7 @@ pub(crate) fn surface_bricks(
     opts: &SparseOptions,
     stats: &mut MeshStats,
 ) -> Result<Vec<Node>, Cancelled> {
-    let brick = opts.brick_cells.max(1).next_power_of_two();
+    let brick = opts.brick_size();
     let longest = spec.cells.iter().copied().max().unwrap_or(1);
     let mut size = brick;
     while size < longest {
