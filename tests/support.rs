@@ -2,7 +2,8 @@
 #![warn(missing_docs)]
 
 use solidkit_kernel::{Solid, json};
-use solidkit_meshing::marching_cubes::{GridSpec, mesh_field};
+use solidkit_meshing::marching_cubes::GridSpec;
+use solidkit_meshing::octree::{SparseOptions, mesh_sparse};
 use solidkit_meshing::{IndexedMesh, TopologyReport};
 use std::path::PathBuf;
 
@@ -22,10 +23,11 @@ pub fn load_tree(rel: &str) -> Solid {
     solid
 }
 
-/// Meshes a solid by marching cubes at `resolution` cells along its longest side.
+/// Meshes a solid by (sparse) marching cubes at `resolution` cells along its longest side, as
+/// `solidkit mesh` does.
 pub fn mesh(solid: &Solid, resolution: usize) -> (IndexedMesh, TopologyReport) {
     let spec = GridSpec::for_bounds(&solid.bbox(), resolution).expect("bounded solid");
-    let mesh = mesh_field(&solid.compile(), spec);
+    let (mesh, _) = mesh_sparse(&solid.compile(), spec, &SparseOptions::default()).expect("not cancelled");
     let report = TopologyReport::of(&mesh);
     (mesh, report)
 }

@@ -129,7 +129,8 @@ impl<'a> Reader<'a> {
         };
         let ty = self.node_type(index, entries, &p)?;
         let children = match ty {
-            "union" | "intersection" | "difference" => {
+            "union" | "intersection" | "difference" | "smooth_union" | "smooth_intersection"
+            | "smooth_difference" => {
                 let list = self.required(index, entries, "children", &p)?;
                 let Value::Array(items) = &self.doc.values[list as usize] else {
                     return Err(self.located(
@@ -144,7 +145,7 @@ impl<'a> Reader<'a> {
                     .map(|(i, &c)| (format!("children[{i}]"), c))
                     .collect()
             }
-            "translate" | "rotate" | "scale" | "mirror" | "affine" => {
+            "translate" | "rotate" | "scale" | "mirror" | "affine" | "offset" | "shell" => {
                 vec![(
                     "child".to_string(),
                     self.required(index, entries, "child", &p)?,
@@ -216,6 +217,20 @@ impl<'a> Reader<'a> {
                 }
                 (NodeKind::Difference, &["children"])
             }
+            "smooth_union" | "smooth_intersection" | "smooth_difference" => {
+                let radius = params.positive("radius")?;
+                if ty == "smooth_difference" && children.is_empty() {
+                    return Err(self.located(f.index, &params.path(), "smooth_difference needs at least one child"));
+                }
+                let kind = match ty {
+                    "smooth_union" => NodeKind::SmoothUnion { radius },
+                    "smooth_intersection" => NodeKind::SmoothIntersection { radius },
+                    _ => NodeKind::SmoothDifference { radius },
+                };
+                (kind, &["radius", "children"])
+            }
+            "offset" => (NodeKind::Offset { distance: params.number("distance")? }, &["distance", "child"]),
+            "shell" => (NodeKind::Shell { thickness: params.positive("thickness")? }, &["thickness", "child"]),
             "translate" => (
                 params.transform(TransformSpec::Translate(params.vec3("offset")?))?,
                 &["offset", "child"],
@@ -303,6 +318,13 @@ impl Params<'_, '_> {
                 format!("expected a number, found {}", v.type_name()),
             )),
         }
+    }
+
+    /// A number that must be positive (a located error otherwise).
+    fn positive(&self, key: &str) -> R<f64> {
+        let at = self.at(key)?;
+        let x = self.number_at(at, key)?;
+        if x > 0.0 { Ok(x) } else { Err(self.fail(at, key, "expected a positive number")) }
     }
 
     fn number(&self, key: &str) -> R<f64> {
@@ -413,6 +435,10 @@ impl Params<'_, '_> {
                     offset: self.number("offset")?,
                 }),
                 &["normal", "offset"],
+            ),
+            "gyroid" => (
+                Primitive::Gyroid(crate::primitive::Gyroid { thickness: self.number("thickness")? }),
+                &["thickness"],
             ),
             other => {
                 let t = self.at("type")?;

@@ -67,8 +67,14 @@ fn members(kind: &NodeKind) -> String {
                 vec3(h.normal),
                 num(h.offset)
             ),
+            Primitive::Gyroid(g) => format!("\"thickness\": {}", num(g.thickness)),
         },
         NodeKind::Union | NodeKind::Intersection | NodeKind::Difference => String::new(),
+        NodeKind::SmoothUnion { radius }
+        | NodeKind::SmoothIntersection { radius }
+        | NodeKind::SmoothDifference { radius } => format!("\"radius\": {}", num(*radius)),
+        NodeKind::Offset { distance } => format!("\"distance\": {}", num(*distance)),
+        NodeKind::Shell { thickness } => format!("\"thickness\": {}", num(*thickness)),
         NodeKind::Transform(t) => match t.spec {
             TransformSpec::Translate(v) => format!("\"offset\": {}", vec3(v)),
             TransformSpec::Rotate { axis, degrees } => {
@@ -100,7 +106,7 @@ fn write_node_tree(out: &mut String, root: &Solid, base: usize) {
         let depth = base + frames.len().saturating_sub(1);
         let Some(top) = frames.last_mut() else { break };
         let (solid, next) = *top;
-        let is_transform = matches!(solid.kind(), NodeKind::Transform(_));
+        let is_transform = solid.kind().is_unary();
         let is_leaf = matches!(solid.kind(), NodeKind::Primitive(_));
         if next == 0 {
             let _ = write!(out, "{{{}", members(solid.kind()));

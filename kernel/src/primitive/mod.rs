@@ -7,6 +7,7 @@
 mod cone;
 mod cuboid;
 mod cylinder;
+mod gyroid;
 mod plane;
 mod sphere;
 mod torus;
@@ -14,6 +15,7 @@ mod torus;
 pub use cone::Cone;
 pub use cuboid::Cuboid;
 pub use cylinder::Cylinder;
+pub use gyroid::{Gyroid, cos_f32, cos_interval, sin_f32, sin_interval};
 pub use plane::HalfSpace;
 pub use sphere::Sphere;
 pub use torus::Torus;
@@ -142,6 +144,8 @@ pub enum Primitive {
     Torus(Torus),
     /// A half-space `n · p ≤ d`.
     HalfSpace(HalfSpace),
+    /// A gyroid sheet (triply periodic, unbounded).
+    Gyroid(Gyroid),
 }
 
 macro_rules! dispatch {
@@ -153,6 +157,7 @@ macro_rules! dispatch {
             Primitive::Cone($s) => $e,
             Primitive::Torus($s) => $e,
             Primitive::HalfSpace($s) => $e,
+            Primitive::Gyroid($s) => $e,
         }
     };
 }
@@ -167,6 +172,7 @@ impl Primitive {
             Primitive::Cone(_) => "cone",
             Primitive::Torus(_) => "torus",
             Primitive::HalfSpace(_) => "plane",
+            Primitive::Gyroid(_) => "gyroid",
         }
     }
 }

@@ -130,6 +130,35 @@ impl Program {
                         .iter_mut()
                         .for_each(|v| *v = -*v);
                 }
+                Instr::SmoothMin(a, b, k) => {
+                    let (ra, rb, r) = (reg(a), reg(b), k.get() as f32);
+                    let other = if ra == dst {
+                        rb
+                    } else if rb == dst {
+                        ra
+                    } else {
+                        s.regs.copy_within(ra * CHUNK..ra * CHUNK + n, dst * CHUNK);
+                        rb
+                    };
+                    let (d, o) = pair(&mut s.regs, dst, other, n);
+                    for (x, y) in d.iter_mut().zip(o) {
+                        *x = super::smooth_min_f32(*x, *y, r);
+                    }
+                }
+                Instr::Abs(a) | Instr::AddConst(a, _) => {
+                    let ra = reg(a);
+                    if ra != dst {
+                        s.regs.copy_within(ra * CHUNK..ra * CHUNK + n, dst * CHUNK);
+                    }
+                    let d = &mut s.regs[dst * CHUNK..dst * CHUNK + n];
+                    match *ins {
+                        Instr::AddConst(_, k) => {
+                            let c = k.get() as f32;
+                            d.iter_mut().for_each(|v| *v += c);
+                        }
+                        _ => d.iter_mut().for_each(|v| *v = v.abs()),
+                    }
+                }
                 Instr::Const(c) => {
                     s.regs[dst * CHUNK..dst * CHUNK + n].fill(c.value() as f32);
                 }

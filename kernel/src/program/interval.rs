@@ -75,6 +75,25 @@ impl Program {
                     x.max(y)
                 }
                 Instr::Neg(a) => -s.slots[a as usize],
+                Instr::SmoothMin(a, c, k) => {
+                    let (x, y, r) = (s.slots[a as usize], s.slots[c as usize], k.get());
+                    // Only a branch that wins by more than the blend radius is exact min.
+                    let shifted = Interval::new(y.lo - r, y.hi + r);
+                    s.choices[i] = match choose(x, shifted, s.scale, true) {
+                        Choice::Left => Choice::Left,
+                        _ => match choose(Interval::new(x.lo - r, x.hi + r), y, s.scale, true) {
+                            Choice::Right => Choice::Right,
+                            _ => Choice::Both,
+                        },
+                    };
+                    let m = x.min(y);
+                    Interval::new(m.lo - 0.25 * r, m.hi)
+                }
+                Instr::Abs(a) => s.slots[a as usize].abs(),
+                Instr::AddConst(a, k) => {
+                    let x = s.slots[a as usize];
+                    Interval::new(x.lo + k.get(), x.hi + k.get())
+                }
                 Instr::Const(c) => Interval::point(c.value()),
             };
             s.slots[i] = v;
@@ -98,18 +117,15 @@ impl Program {
         for (i, ins) in self.instrs.iter().enumerate() {
             let m = |v: u32| map[v as usize];
             let new = match (*ins, s.choices[i]) {
-                (Instr::Min(a, _) | Instr::Max(a, _), Choice::Left) => {
+                (Instr::Min(a, _) | Instr::Max(a, _) | Instr::SmoothMin(a, _, _), Choice::Left) => {
                     map[i] = m(a);
                     continue;
                 }
-                (Instr::Min(_, b) | Instr::Max(_, b), Choice::Right) => {
+                (Instr::Min(_, b) | Instr::Max(_, b) | Instr::SmoothMin(_, b, _), Choice::Right) => {
                     map[i] = m(b);
                     continue;
                 }
-                (Instr::Min(a, b), _) => Instr::Min(m(a), m(b)),
-                (Instr::Max(a, b), _) => Instr::Max(m(a), m(b)),
-                (Instr::Neg(a), _) => Instr::Neg(m(a)),
-                (other, _) => other,
+                (other, _) => super::lower::remap(other, m),
             };
             out.push(new);
             map[i] = (out.len() - 1) as u32;

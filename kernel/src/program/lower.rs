@@ -96,6 +96,36 @@ impl Lowerer {
     fn combine(&mut self, kind: &NodeKind, frame: u32, c: &[u32]) -> u32 {
         match kind {
             NodeKind::Primitive(p) => self.leaf(p, frame),
+            NodeKind::SmoothUnion { radius } => {
+                let r = super::Bits::of(*radius);
+                self.fold(c, |a, b| Instr::SmoothMin(a, b, r), Infinity::Positive)
+            }
+            // smooth max(a, b) = −smooth min(−a, −b).
+            NodeKind::SmoothIntersection { radius } => {
+                let negated: Vec<u32> = c.iter().map(|&x| self.emit(Instr::Neg(x))).collect();
+                let r = super::Bits::of(*radius);
+                let m = self.fold(&negated, |a, b| Instr::SmoothMin(a, b, r), Infinity::Positive);
+                self.emit(Instr::Neg(m))
+            }
+            // a minus b = smooth max(a, −b) = −smooth min(−a, b).
+            NodeKind::SmoothDifference { radius } => {
+                let Some((&first, rest)) = c.split_first() else {
+                    return self.emit(Instr::Const(Infinity::Positive));
+                };
+                let r = super::Bits::of(*radius);
+                let start = self.emit(Instr::Neg(first));
+                let m = rest.iter().fold(start, |acc, &x| self.emit(Instr::SmoothMin(acc, x, r)));
+                self.emit(Instr::Neg(m))
+            }
+            NodeKind::Offset { distance } => {
+                let child = self.fold(c, Instr::Min, Infinity::Positive);
+                self.emit(Instr::AddConst(child, super::Bits::of(-distance)))
+            }
+            NodeKind::Shell { thickness } => {
+                let child = self.fold(c, Instr::Min, Infinity::Positive);
+                let a = self.emit(Instr::Abs(child));
+                self.emit(Instr::AddConst(a, super::Bits::of(-0.5 * thickness)))
+            }
             NodeKind::Union | NodeKind::Transform(_) => {
                 self.fold(c, Instr::Min, Infinity::Positive)
             }
@@ -112,7 +142,7 @@ impl Lowerer {
         }
     }
 
-    fn fold(&mut self, c: &[u32], op: fn(u32, u32) -> Instr, empty: Infinity) -> u32 {
+    fn fold(&mut self, c: &[u32], op: impl Fn(u32, u32) -> Instr, empty: Infinity) -> u32 {
         match c.split_first() {
             None => self.emit(Instr::Const(empty)),
             Some((&first, rest)) => rest.iter().fold(first, |acc, &x| self.emit(op(acc, x))),
@@ -192,16 +222,24 @@ pub(crate) fn compact(instrs: &[Instr], result: u32) -> (Vec<Instr>, u32) {
             continue;
         }
         let r = |v: u32| new_index[v as usize];
-        out.push(match *ins {
-            Instr::Min(a, b) => Instr::Min(r(a), r(b)),
-            Instr::Max(a, b) => Instr::Max(r(a), r(b)),
-            Instr::Neg(a) => Instr::Neg(r(a)),
-            other => other,
-        });
+        out.push(remap(*ins, r));
         new_index[i] = (out.len() - 1) as u32;
     }
     let res = new_index[result as usize];
     (out, res)
+}
+
+/// The instruction with its operands renumbered by `r`.
+pub(crate) fn remap(ins: Instr, r: impl Fn(u32) -> u32) -> Instr {
+    match ins {
+        Instr::Min(a, b) => Instr::Min(r(a), r(b)),
+        Instr::Max(a, b) => Instr::Max(r(a), r(b)),
+        Instr::SmoothMin(a, b, k) => Instr::SmoothMin(r(a), r(b), k),
+        Instr::Neg(a) => Instr::Neg(r(a)),
+        Instr::Abs(a) => Instr::Abs(r(a)),
+        Instr::AddConst(a, k) => Instr::AddConst(r(a), k),
+        other @ (Instr::Leaf { .. } | Instr::Const(_)) => other,
+    }
 }
 
 impl Program {

@@ -41,8 +41,46 @@ pub enum Instr {
     Max(u32, u32),
     /// `−a`.
     Neg(u32),
+    /// Quadratic smooth minimum of `a` and `b` with blend radius `r` (bits of an f64):
+    /// `min(a, b) − r·h²/4` with `h = max(r − |a − b|, 0)/r`. Its gradient is a convex
+    /// combination of the operands' gradients, so Lipschitz bounds are preserved.
+    SmoothMin(u32, u32, Bits),
+    /// `|a|`.
+    Abs(u32),
+    /// `a + c` (bits of an f64).
+    AddConst(u32, Bits),
     /// The constant `+∞` (empty union) or `−∞` (empty intersection).
     Const(Infinity),
+}
+
+/// The bit pattern of an f64 parameter (so instructions can be hashed and compared).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub struct Bits(pub u64);
+
+impl Bits {
+    /// Wraps a number.
+    pub fn of(x: f64) -> Self {
+        Bits(x.to_bits())
+    }
+
+    /// The number.
+    pub fn get(self) -> f64 {
+        f64::from_bits(self.0)
+    }
+}
+
+/// Quadratic smooth minimum in double precision.
+#[inline]
+pub fn smooth_min(a: f64, b: f64, r: f64) -> f64 {
+    let h = (r - (a - b).abs()).max(0.0) / r;
+    a.min(b) - h * h * r * 0.25
+}
+
+/// Quadratic smooth minimum in single precision (same formula, same operation order).
+#[inline(always)]
+pub fn smooth_min_f32(a: f32, b: f32, r: f32) -> f32 {
+    let h = (r - (a - b).abs()).max(0.0) / r;
+    a.min(b) - h * h * r * 0.25
 }
 
 /// The two infinite constants.

@@ -6,8 +6,8 @@ use super::Instr;
 /// Operands of an instruction.
 pub(crate) fn operands(i: &Instr) -> ([u32; 2], usize) {
     match *i {
-        Instr::Min(a, b) | Instr::Max(a, b) => ([a, b], 2),
-        Instr::Neg(a) => ([a, 0], 1),
+        Instr::Min(a, b) | Instr::Max(a, b) | Instr::SmoothMin(a, b, _) => ([a, b], 2),
+        Instr::Neg(a) | Instr::Abs(a) | Instr::AddConst(a, _) => ([a, 0], 1),
         Instr::Leaf { .. } | Instr::Const(_) => ([0, 0], 0),
     }
 }

@@ -21,6 +21,9 @@ impl Program {
                 Instr::Min(a, b) => slots[r(a)].min(slots[r(b)]),
                 Instr::Max(a, b) => slots[r(a)].max(slots[r(b)]),
                 Instr::Neg(a) => -slots[r(a)],
+                Instr::SmoothMin(a, b, k) => super::smooth_min(slots[r(a)], slots[r(b)], k.get()),
+                Instr::Abs(a) => slots[r(a)].abs(),
+                Instr::AddConst(a, k) => slots[r(a)] + k.get(),
                 Instr::Const(c) => c.value(),
             };
             slots[self.regs[i] as usize] = v;
@@ -57,6 +60,23 @@ impl Program {
                 Instr::Neg(a) => {
                     let x = slots[r(a)];
                     (-x.0, -x.1)
+                }
+                Instr::SmoothMin(a, b, k) => {
+                    let (x, y, rad) = (slots[r(a)], slots[r(b)], k.get());
+                    // d/da and d/db of min − r·h²/4: weights (1 − w, w) with w = h/2 for the
+                    // larger operand.
+                    let h = (rad - (x.0 - y.0).abs()).max(0.0) / rad;
+                    let w = 0.5 * h;
+                    let (lo, hi) = if x.0 <= y.0 { (x, y) } else { (y, x) };
+                    (super::smooth_min(x.0, y.0, rad), lo.1 * (1.0 - w) + hi.1 * w)
+                }
+                Instr::Abs(a) => {
+                    let x = slots[r(a)];
+                    if x.0 < 0.0 { (-x.0, -x.1) } else { x }
+                }
+                Instr::AddConst(a, k) => {
+                    let x = slots[r(a)];
+                    (x.0 + k.get(), x.1)
                 }
                 Instr::Const(c) => (c.value(), DVec3::ZERO),
             };

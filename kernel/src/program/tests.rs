@@ -233,3 +233,80 @@ fn pruned_programs_give_identical_values_inside_their_box() {
     }
     assert!(pruned_some > 25, "pruning rarely applies: {pruned_some}");
 }
+
+fn blend_tree() -> Solid {
+    let a = Solid::sphere(0.5).translate(DVec3::new(-0.4, 0.0, 0.0));
+    let b = Solid::cuboid(DVec3::new(0.6, 0.5, 0.4)).translate(DVec3::new(0.35, 0.1, 0.0));
+    let body = Solid::smooth_union_all([a, b], 0.2);
+    let cut = Solid::smooth_difference_all(body, [Solid::cylinder(0.12, 2.0)], 0.05);
+    Solid::smooth_intersection_all([cut.shell(0.1), Solid::half_space(DVec3::Z, 0.2)], 0.03).offset(0.01)
+}
+
+#[test]
+fn smooth_union_is_below_min_and_equal_beyond_the_radius() {
+    let a = Solid::sphere(0.5);
+    let b = Solid::sphere(0.5).translate(DVec3::X * 0.8);
+    let s = a.smooth_union(&b, 0.3).compile();
+    let (pa, pb) = (a.compile(), b.compile());
+    let mut rng = Rng::new(2);
+    for _ in 0..2000 {
+        let p = rng.vec(1.5);
+        let (fa, fb, f) = (pa.value(p), pb.value(p), s.value(p));
+        assert!(f <= fa.min(fb) + 1e-15);
+        assert!(fa.min(fb) - f <= 0.3 / 4.0 + 1e-15);
+        if (fa - fb).abs() >= 0.3 {
+            assert_eq!(f, fa.min(fb));
+        }
+    }
+}
+
+#[test]
+fn blends_offsets_and_shells_keep_the_distance_bound() {
+    let p = blend_tree().compile();
+    let mut rng = Rng::new(12);
+    for _ in 0..4000 {
+        let a = rng.vec(1.2);
+        let b = a + rng.vec(0.2);
+        assert!((p.value(a) - p.value(b)).abs() <= (a - b).length() * (1.0 + 1e-9), "not 1-Lipschitz");
+    }
+}
+
+#[test]
+fn blend_gradients_intervals_and_pruning_agree() {
+    let p = blend_tree().compile();
+    let mut rng = Rng::new(13);
+    let mut checked = 0;
+    for _ in 0..2000 {
+        let q = rng.vec(1.0);
+        let h = 1e-6;
+        let fd = |h: f64| {
+            DVec3::new(
+                p.value(q + DVec3::X * h) - p.value(q - DVec3::X * h),
+                p.value(q + DVec3::Y * h) - p.value(q - DVec3::Y * h),
+                p.value(q + DVec3::Z * h) - p.value(q - DVec3::Z * h),
+            ) / (2.0 * h)
+        };
+        let (g1, g2) = (fd(h), fd(3.0 * h));
+        if (g1 - g2).length() < 1e-6 {
+            assert!((p.gradient(q) - g1).length() < 1e-4, "at {q}: {} vs {g1}", p.gradient(q));
+            checked += 1;
+        }
+    }
+    assert!(checked > 1500, "{checked}");
+    let mut s = IntervalScratch::default();
+    for _ in 0..300 {
+        let c = rng.vec(1.0);
+        let h = rng.vec(0.25).abs() + DVec3::splat(0.005);
+        let b = Aabb::new(c - h, c + h);
+        let pts: Vec<DVec3> = (0..64).map(|_| c + rng.vec(1.0) * h).collect();
+        let iv = p.interval(&b);
+        for q in &pts {
+            let v = p.value(*q);
+            assert!(iv.lo <= v + 1e-12 && v <= iv.hi + 1e-12, "{v} outside {iv:?}");
+        }
+        let full = batch_values(&p, &pts);
+        if let Pruned::Surface(q) = p.prune_for_box(&b, &mut s) {
+            assert_eq!(full, batch_values(&q, &pts));
+        }
+    }
+}

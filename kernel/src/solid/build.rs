@@ -132,6 +132,40 @@ impl Solid {
     }
 }
 
+impl Solid {
+    /// Union of `solids` blended with fillets of `radius`.
+    pub fn smooth_union_all(solids: impl IntoIterator<Item = Solid>, radius: f64) -> Solid {
+        Solid::from_parts(NodeKind::SmoothUnion { radius }, solids.into_iter().collect())
+    }
+
+    /// Intersection of `solids` with creases rounded by `radius`.
+    pub fn smooth_intersection_all(solids: impl IntoIterator<Item = Solid>, radius: f64) -> Solid {
+        Solid::from_parts(NodeKind::SmoothIntersection { radius }, solids.into_iter().collect())
+    }
+
+    /// `base` minus `cutters` with creases rounded by `radius`.
+    pub fn smooth_difference_all(base: Solid, cutters: impl IntoIterator<Item = Solid>, radius: f64) -> Solid {
+        let mut children = vec![base];
+        children.extend(cutters);
+        Solid::from_parts(NodeKind::SmoothDifference { radius }, children)
+    }
+
+    /// `self ∪ other` with a fillet of `radius`.
+    pub fn smooth_union(&self, other: &Solid, radius: f64) -> Solid {
+        Solid::smooth_union_all([self.clone(), other.clone()], radius)
+    }
+
+    /// Grown by `distance` (shrunk when negative).
+    pub fn offset(&self, distance: f64) -> Solid {
+        Solid::from_parts(NodeKind::Offset { distance }, vec![self.clone()])
+    }
+
+    /// Hollowed to a wall of `thickness` centred on the surface.
+    pub fn shell(&self, thickness: f64) -> Solid {
+        Solid::from_parts(NodeKind::Shell { thickness }, vec![self.clone()])
+    }
+}
+
 impl std::ops::BitOr for &Solid {
     type Output = Solid;
     fn bitor(self, rhs: &Solid) -> Solid {

@@ -38,6 +38,31 @@ pub enum NodeKind {
     Difference,
     /// The single child moved by an affine map (boxed: it is much larger than the other kinds).
     Transform(Box<Transform>),
+    /// Union with fillets of radius `radius` where children meet (quadratic smooth minimum).
+    SmoothUnion {
+        /// Blend radius (field units).
+        radius: f64,
+    },
+    /// Intersection with rounded creases of radius `radius` (quadratic smooth maximum).
+    SmoothIntersection {
+        /// Blend radius (field units).
+        radius: f64,
+    },
+    /// The first child minus the others with rounded creases of radius `radius`.
+    SmoothDifference {
+        /// Blend radius (field units).
+        radius: f64,
+    },
+    /// The single child grown by `distance` (shrunk when negative): `f − d`.
+    Offset {
+        /// Offset distance.
+        distance: f64,
+    },
+    /// The single child hollowed to a wall of `thickness` centred on its surface: `|f| − t/2`.
+    Shell {
+        /// Wall thickness.
+        thickness: f64,
+    },
 }
 
 impl NodeKind {
@@ -55,7 +80,17 @@ impl NodeKind {
                 crate::TransformSpec::Mirror(_) => "mirror",
                 crate::TransformSpec::Affine(_) => "affine",
             },
+            NodeKind::SmoothUnion { .. } => "smooth_union",
+            NodeKind::SmoothIntersection { .. } => "smooth_intersection",
+            NodeKind::SmoothDifference { .. } => "smooth_difference",
+            NodeKind::Offset { .. } => "offset",
+            NodeKind::Shell { .. } => "shell",
         }
+    }
+
+    /// True for the kinds that take exactly one child (transforms, offset, shell).
+    pub fn is_unary(&self) -> bool {
+        matches!(self, NodeKind::Transform(_) | NodeKind::Offset { .. } | NodeKind::Shell { .. })
     }
 }
 

@@ -48,6 +48,22 @@ impl Solid {
             NodeKind::Transform(t) => c
                 .first()
                 .map_or(Aabb::empty(), |b| b.transformed(&t.forward)),
+            // A smooth union adds material within r/4 of the children (for distance fields); r is
+            // a generous margin.
+            NodeKind::SmoothUnion { radius } => c
+                .iter()
+                .fold(Aabb::empty(), |a, b| a.union(b))
+                .expanded(radius.max(0.0)),
+            NodeKind::SmoothIntersection { .. } => {
+                c.iter().fold(Aabb::infinite(), |a, b| a.intersection(b))
+            }
+            NodeKind::SmoothDifference { .. } => c.first().copied().unwrap_or(Aabb::empty()),
+            NodeKind::Offset { distance } => c
+                .first()
+                .map_or(Aabb::empty(), |b| b.expanded(distance.max(0.0))),
+            NodeKind::Shell { thickness } => c
+                .first()
+                .map_or(Aabb::empty(), |b| b.expanded(thickness.max(0.0) * 0.5)),
         })
     }
 
@@ -95,7 +111,25 @@ fn check_node(solid: &Solid) -> Result<(), String> {
                 .map(|_| ())
                 .map_err(|e| e.to_string())
         }
-        NodeKind::Difference if n == 0 => Err("difference needs at least one child".into()),
+        NodeKind::Difference | NodeKind::SmoothDifference { .. } if n == 0 => {
+            Err(format!("{name} needs at least one child"))
+        }
+        NodeKind::Offset { .. } | NodeKind::Shell { .. } if n != 1 => {
+            Err(format!("{name} takes exactly one child, found {n}"))
+        }
+        NodeKind::SmoothUnion { radius }
+        | NodeKind::SmoothIntersection { radius }
+        | NodeKind::SmoothDifference { radius }
+            if !(radius.is_finite() && *radius > 0.0) =>
+        {
+            Err("radius: expected a positive number".into())
+        }
+        NodeKind::Offset { distance } if !distance.is_finite() => {
+            Err("distance: expected a finite number".into())
+        }
+        NodeKind::Shell { thickness } if !(thickness.is_finite() && *thickness > 0.0) => {
+            Err("thickness: expected a positive number".into())
+        }
         _ => Ok(()),
     }
 }
@@ -106,7 +140,7 @@ fn path_of(frames: &[(&Solid, usize)]) -> String {
     for pair in frames.windows(2) {
         let (parent, visited) = pair[0];
         match parent.kind() {
-            NodeKind::Transform(_) => parts.push("child".into()),
+            k if k.is_unary() => parts.push("child".into()),
             _ => parts.push(format!("children[{}]", visited - 1)),
         }
     }
