@@ -129,7 +129,7 @@ fn join_vertices(
     mesh.positions
         .chunks_exact(3)
         .map(|xyz| {
-            let p = DVec3::new(xyz[0].into(), xyz[1].into(), xyz[2].into());
+            let p = DVec3::new(xyz[0], xyz[1], xyz[2]);
             if !p.is_finite() {
                 return Err(MeshIoError::invalid(
                     name,
