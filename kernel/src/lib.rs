@@ -17,6 +17,7 @@ pub mod json;
 mod mesh;
 pub mod primitive;
 pub mod program;
+mod simd;
 mod solid;
 mod transform;
 

@@ -57,4 +57,19 @@ impl Shape for Cuboid {
         positive("size", self.size.y)?;
         positive("size", self.size.z)
     }
+    fn values_f32(&self, x: &[f32], y: &[f32], z: &[f32], out: &mut [f32]) {
+        cuboid_f32(self.half().as_vec3(), x, y, z, out);
+    }
+}
+
+crate::simd::wide_loop! {
+    fn cuboid_f32(h: glam::Vec3, x: &[f32], y: &[f32], z: &[f32], out: &mut [f32]) {
+        let n = out.len();
+        let (x, y, z) = (&x[..n], &y[..n], &z[..n]);
+        for i in 0..n {
+            let (qx, qy, qz) = (x[i].abs() - h.x, y[i].abs() - h.y, z[i].abs() - h.z);
+            let (ox, oy, oz) = (qx.max(0.0), qy.max(0.0), qz.max(0.0));
+            out[i] = (ox * ox + oy * oy + oz * oz).sqrt() + qx.max(qy).max(qz).min(0.0);
+        }
+    }
 }

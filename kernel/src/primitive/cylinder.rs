@@ -5,6 +5,19 @@ use super::{PrimitiveError, Shape, positive, radial, radial_interval, sign};
 use crate::{Aabb, Interval};
 use glam::DVec3;
 
+crate::simd::wide_loop! {
+    fn cylinder_f32(r: f32, hh: f32, x: &[f32], y: &[f32], z: &[f32], out: &mut [f32]) {
+        let n = out.len();
+        let (x, y, z) = (&x[..n], &y[..n], &z[..n]);
+        for i in 0..n {
+            let dx = (x[i] * x[i] + y[i] * y[i]).sqrt() - r;
+            let dz = z[i].abs() - hh;
+            let (ox, oz) = (dx.max(0.0), dz.max(0.0));
+            out[i] = dx.max(dz).min(0.0) + (ox * ox + oz * oz).sqrt();
+        }
+    }
+}
+
 /// A capped cylinder along z, centred at the origin.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Cylinder {
@@ -46,5 +59,8 @@ impl Shape for Cylinder {
     fn validate(&self) -> Result<(), PrimitiveError> {
         positive("radius", self.radius)?;
         positive("height", self.height)
+    }
+    fn values_f32(&self, x: &[f32], y: &[f32], z: &[f32], out: &mut [f32]) {
+        cylinder_f32(self.radius as f32, (self.height * 0.5) as f32, x, y, z, out);
     }
 }

@@ -15,7 +15,7 @@ mod torus;
 pub use cone::Cone;
 pub use cuboid::Cuboid;
 pub use cylinder::Cylinder;
-pub use gyroid::{Gyroid, cos_f32, cos_interval, sin_f32, sin_interval};
+pub use gyroid::{Gyroid, cos_f32, cos_interval, sin_f32, sin_interval, sincos_f32};
 pub use plane::HalfSpace;
 pub use sphere::Sphere;
 pub use torus::Torus;

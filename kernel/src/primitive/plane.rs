@@ -67,4 +67,13 @@ impl Shape for HalfSpace {
         }
         Ok(())
     }
+    fn values_f32(&self, x: &[f32], y: &[f32], z: &[f32], out: &mut [f32]) {
+        let m = self.unit().as_vec3();
+        let d = self.offset as f32;
+        let n = out.len();
+        let (x, y, z) = (&x[..n], &y[..n], &z[..n]);
+        for i in 0..n {
+            out[i] = m.x * x[i] + m.y * y[i] + m.z * z[i] - d;
+        }
+    }
 }

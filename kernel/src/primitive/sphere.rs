@@ -4,6 +4,16 @@ use super::{PrimitiveError, Shape, positive};
 use crate::{Aabb, Interval};
 use glam::DVec3;
 
+crate::simd::wide_loop! {
+    fn sphere_f32(r: f32, x: &[f32], y: &[f32], z: &[f32], out: &mut [f32]) {
+        let n = out.len();
+        let (x, y, z) = (&x[..n], &y[..n], &z[..n]);
+        for i in 0..n {
+            out[i] = (x[i] * x[i] + y[i] * y[i] + z[i] * z[i]).sqrt() - r;
+        }
+    }
+}
+
 /// A ball centred at the origin.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Sphere {
@@ -31,5 +41,8 @@ impl Shape for Sphere {
     }
     fn validate(&self) -> Result<(), PrimitiveError> {
         positive("radius", self.radius)
+    }
+    fn values_f32(&self, x: &[f32], y: &[f32], z: &[f32], out: &mut [f32]) {
+        sphere_f32(self.radius as f32, x, y, z, out);
     }
 }

@@ -5,6 +5,17 @@ use super::{PrimitiveError, Shape, positive, radial, radial_interval};
 use crate::{Aabb, Interval};
 use glam::DVec3;
 
+crate::simd::wide_loop! {
+    fn torus_f32(big: f32, small: f32, x: &[f32], y: &[f32], z: &[f32], out: &mut [f32]) {
+        let n = out.len();
+        let (x, y, z) = (&x[..n], &y[..n], &z[..n]);
+        for i in 0..n {
+            let q = (x[i] * x[i] + y[i] * y[i]).sqrt() - big;
+            out[i] = (q * q + z[i] * z[i]).sqrt() - small;
+        }
+    }
+}
+
 /// A torus around the z axis, centred at the origin.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Torus {
@@ -38,5 +49,15 @@ impl Shape for Torus {
     fn validate(&self) -> Result<(), PrimitiveError> {
         positive("major_radius", self.major_radius)?;
         positive("minor_radius", self.minor_radius)
+    }
+    fn values_f32(&self, x: &[f32], y: &[f32], z: &[f32], out: &mut [f32]) {
+        torus_f32(
+            self.major_radius as f32,
+            self.minor_radius as f32,
+            x,
+            y,
+            z,
+            out,
+        );
     }
 }

@@ -38,17 +38,27 @@ impl BatchScratch {
     }
 }
 
-#[inline]
-fn min_into(dst: &mut [f32], src: &[f32]) {
-    for (d, s) in dst.iter_mut().zip(src) {
-        *d = d.min(*s);
+crate::simd::wide_loop! {
+    fn min_into(dst: &mut [f32], src: &[f32]) {
+        for (d, s) in dst.iter_mut().zip(src) {
+            *d = d.min(*s);
+        }
     }
 }
 
-#[inline]
-fn max_into(dst: &mut [f32], src: &[f32]) {
-    for (d, s) in dst.iter_mut().zip(src) {
-        *d = d.max(*s);
+crate::simd::wide_loop! {
+    fn max_into(dst: &mut [f32], src: &[f32]) {
+        for (d, s) in dst.iter_mut().zip(src) {
+            *d = d.max(*s);
+        }
+    }
+}
+
+crate::simd::wide_loop! {
+    fn scale_by(dst: &mut [f32], k: f32) {
+        for d in dst.iter_mut() {
+            *d *= k;
+        }
     }
 }
 
@@ -60,6 +70,20 @@ fn pair(regs: &mut [f32], dst: usize, src: usize, n: usize) -> (&mut [f32], &[f3
     } else {
         let (lo, hi) = regs.split_at_mut(dst * CHUNK);
         (&mut hi[..n], &lo[src * CHUNK..src * CHUNK + n])
+    }
+}
+
+crate::simd::wide_loop! {
+    /// Applies a row-major 3 × 4 affine map to coordinate arrays (all of the same length).
+    fn transform_chunk(m: &[[f32; 4]; 3], x: &[f32], y: &[f32], z: &[f32], lx: &mut [f32], ly: &mut [f32], lz: &mut [f32]) {
+        let n = lx.len();
+        let (x, y, z, ly, lz) = (&x[..n], &y[..n], &z[..n], &mut ly[..n], &mut lz[..n]);
+        for k in 0..n {
+            let (px, py, pz) = (x[k], y[k], z[k]);
+            lx[k] = m[0][0] * px + m[0][1] * py + m[0][2] * pz + m[0][3];
+            ly[k] = m[1][0] * px + m[1][1] * py + m[1][2] * pz + m[1][3];
+            lz[k] = m[2][0] * px + m[2][1] * py + m[2][2] * pz + m[2][3];
+        }
     }
 }
 
@@ -76,6 +100,8 @@ impl Program {
         let n = out.len();
         debug_assert!(n <= CHUNK && x.len() >= n && y.len() >= n && z.len() >= n);
         s.fit(self);
+        // Leaves in the same frame share the transformed coordinates.
+        let mut local_frame = u32::MAX;
         for (i, ins) in self.instrs.iter().enumerate() {
             let dst = self.regs[i] as usize;
             let reg = |v: u32| self.regs[v as usize] as usize;
@@ -88,17 +114,21 @@ impl Program {
                         prim.values_f32(&x[..n], &y[..n], &z[..n], out_reg);
                     } else {
                         let [lx, ly, lz] = &mut s.local;
-                        let m = &f.rows_f32;
-                        for k in 0..n {
-                            let (px, py, pz) = (x[k], y[k], z[k]);
-                            lx[k] = m[0][0] * px + m[0][1] * py + m[0][2] * pz + m[0][3];
-                            ly[k] = m[1][0] * px + m[1][1] * py + m[1][2] * pz + m[1][3];
-                            lz[k] = m[2][0] * px + m[2][1] * py + m[2][2] * pz + m[2][3];
+                        if local_frame != frame {
+                            transform_chunk(
+                                &f.rows_f32,
+                                &x[..n],
+                                &y[..n],
+                                &z[..n],
+                                &mut lx[..n],
+                                &mut ly[..n],
+                                &mut lz[..n],
+                            );
+                            local_frame = frame;
                         }
                         prim.values_f32(&lx[..n], &ly[..n], &lz[..n], out_reg);
                         if f.sigma != 1.0 {
-                            let sigma = f.sigma as f32;
-                            out_reg.iter_mut().for_each(|v| *v *= sigma);
+                            scale_by(out_reg, f.sigma as f32);
                         }
                     }
                 }

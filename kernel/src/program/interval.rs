@@ -27,6 +27,8 @@ pub struct IntervalScratch {
     slots: Vec<Interval>,
     choices: Vec<Choice>,
     scale: f64,
+    /// True when the last evaluation found a branch that cannot win.
+    prunable: bool,
 }
 
 /// The outcome of pruning a program over a box.
@@ -51,11 +53,11 @@ impl Program {
     /// Interval of the field over `b`; the choices are left in `s` for [`Program::prune`].
     pub fn interval_with(&self, b: &Aabb, s: &mut IntervalScratch) -> Interval {
         let n = self.instrs.len();
-        s.slots.clear();
+        // Every slot is written before it is read; choices are reset only where they are set.
         s.slots.resize(n, Interval::point(0.0));
-        s.choices.clear();
         s.choices.resize(n, Choice::Both);
         s.scale = 1.0 + b.min.abs().max(b.max.abs()).max_element().min(1e30);
+        s.prunable = false;
         for (i, ins) in self.instrs.iter().enumerate() {
             let v = match *ins {
                 Instr::Leaf { prim, frame } => {
@@ -67,11 +69,13 @@ impl Program {
                 Instr::Min(a, c) => {
                     let (x, y) = (s.slots[a as usize], s.slots[c as usize]);
                     s.choices[i] = choose(x, y, s.scale, true);
+                    s.prunable |= s.choices[i] != Choice::Both;
                     x.min(y)
                 }
                 Instr::Max(a, c) => {
                     let (x, y) = (s.slots[a as usize], s.slots[c as usize]);
                     s.choices[i] = choose(x, y, s.scale, false);
+                    s.prunable |= s.choices[i] != Choice::Both;
                     x.max(y)
                 }
                 Instr::Neg(a) => -s.slots[a as usize],
@@ -86,6 +90,7 @@ impl Program {
                             _ => Choice::Both,
                         },
                     };
+                    s.prunable |= s.choices[i] != Choice::Both;
                     let m = x.min(y);
                     Interval::new(m.lo - 0.25 * r, m.hi)
                 }
@@ -109,7 +114,7 @@ impl Program {
     /// The program with the branches that cannot win (per the last [`Program::interval_with`]
     /// in `s`) removed, or `None` when nothing can be removed.
     pub fn prune(&self, s: &IntervalScratch) -> Option<Program> {
-        if !s.choices.iter().any(|c| *c != Choice::Both) {
+        if !s.prunable {
             return None;
         }
         let mut map = vec![0u32; self.instrs.len()];
@@ -121,7 +126,10 @@ impl Program {
                     map[i] = m(a);
                     continue;
                 }
-                (Instr::Min(_, b) | Instr::Max(_, b) | Instr::SmoothMin(_, b, _), Choice::Right) => {
+                (
+                    Instr::Min(_, b) | Instr::Max(_, b) | Instr::SmoothMin(_, b, _),
+                    Choice::Right,
+                ) => {
                     map[i] = m(b);
                     continue;
                 }

@@ -1,0 +1,51 @@
+//! Runtime selection of wider vector instructions for hot element-wise loops.
+//!
+//! [`wide_loop!`] compiles a loop body twice — for the baseline target and with AVX2 enabled —
+//! and picks the AVX2 copy at run time when the CPU has it (a portable binary that still uses the
+//! machine's full vector width). Both copies perform the same IEEE operations in the same order
+//! (no fused multiply-add: Rust never contracts `a * b + c` on its own), so results are
+//! bit-identical whichever copy runs.
+//!
+//! This is the one place the kernel uses `unsafe`: calling a `#[target_feature]` function, which
+//! is sound exactly when the feature was detected on the running CPU, as checked right before.
+
+/// True when the running CPU supports AVX2 (cached by the standard library).
+#[inline]
+pub fn avx2() -> bool {
+    #[cfg(target_arch = "x86_64")]
+    {
+        std::arch::is_x86_feature_detected!("avx2")
+    }
+    #[cfg(not(target_arch = "x86_64"))]
+    {
+        false
+    }
+}
+
+/// Defines a function whose body is compiled for the baseline target and for AVX2, dispatched
+/// at run time. The body must be an element-wise loop (it is force-inlined into both copies).
+macro_rules! wide_loop {
+    ($(#[$m:meta])* $vis:vis fn $name:ident($($arg:ident : $ty:ty),* $(,)?) $body:block) => {
+        $(#[$m])*
+        #[allow(unsafe_code)]
+        $vis fn $name($($arg: $ty),*) {
+            #[inline(always)]
+            fn body($($arg: $ty),*) $body
+            #[cfg(target_arch = "x86_64")]
+            {
+                #[target_feature(enable = "avx2")]
+                fn wide($($arg: $ty),*) {
+                    body($($arg),*)
+                }
+                if $crate::simd::avx2() {
+                    // SAFETY: `wide` only requires AVX2, which the running CPU was just shown
+                    // to support.
+                    return unsafe { wide($($arg),*) };
+                }
+            }
+            body($($arg),*)
+        }
+    };
+}
+
+pub(crate) use wide_loop;
