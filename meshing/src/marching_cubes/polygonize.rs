@@ -25,6 +25,8 @@ pub fn inside(v: f32) -> bool {
 
 /// The vertex on the edge from `pa` (value `va`) to `pb` (value `vb`), or `None` when the edge
 /// does not change sign. Shared by every polygonizer, so equal samples give equal vertices.
+/// Positions are rounded to single precision (what mesh files store), which also lets the sparse
+/// mesher keep vertices in half the memory.
 #[inline]
 pub fn edge_vertex(pa: DVec3, va: f32, pb: DVec3, vb: f32) -> Option<DVec3> {
     if inside(va) == inside(vb) {
@@ -37,7 +39,7 @@ pub fn edge_vertex(pa: DVec3, va: f32, pb: DVec3, vb: f32) -> Option<DVec3> {
     } else {
         0.5
     };
-    Some(pa + (pb - pa) * t)
+    Some((pa + (pb - pa) * t).as_vec3().as_dvec3())
 }
 
 /// Crossing vertices owned by one sample slice `k`: edges along x and y within the slice, and

@@ -3,7 +3,7 @@
 //! then `i` and case order. Each grid row is covered by the bricks of one brick row, visited in
 //! `x` order, so concatenating their row segments gives the dense order.
 
-use super::brick::{BrickOutput, edge_parts};
+use super::brick::{BrickEdges, BrickTriangles, local_parts};
 use crate::sink::MeshSink;
 use rayon::prelude::*;
 use std::collections::HashMap;
@@ -15,7 +15,7 @@ enum BrickIndex {
 }
 
 impl BrickIndex {
-    fn new(bricks: &[BrickOutput], dims: [usize; 3]) -> Self {
+    fn new(bricks: &[BrickEdges], dims: [usize; 3]) -> Self {
         let total = dims[0].saturating_mul(dims[1]).saturating_mul(dims[2]);
         if total <= 1 << 24 {
             let mut slots = vec![u32::MAX; total];
@@ -51,20 +51,24 @@ fn owner(g: usize, brick: usize, bricks_along: usize) -> (usize, usize) {
     (b, g - b * brick)
 }
 
+/// Emits the vertices and triangles of the bricks (sorted by z, y, x brick coordinates) into
+/// `sink` in the dense path's order. Triangle lists are consumed as they are resolved and vertex
+/// lists are freed before triangles are emitted, to keep the peak memory low.
 pub(crate) fn assemble(
-    mut bricks: Vec<BrickOutput>,
+    bricks: Vec<BrickEdges>,
+    triangles: Vec<BrickTriangles>,
     cells: [usize; 3],
     brick: usize,
     sink: &mut impl MeshSink,
 ) {
     let dims = cells.map(|c| c.div_ceil(brick).max(1));
-    bricks.sort_unstable_by_key(|b| (b.coord[2], b.coord[1], b.coord[0]));
     let index = BrickIndex::new(&bricks, dims);
     // Bricks of each brick row (z, y), in x order.
     let mut rows: HashMap<(usize, usize), Vec<usize>> = HashMap::new();
     for (b, o) in bricks.iter().enumerate() {
         rows.entry((o.coord[2], o.coord[1])).or_default().push(b);
     }
+    let no_bricks: &[usize] = &[];
     // Vertex numbering: the base index of every owned edge row of every brick.
     let mut bases: Vec<Vec<u32>> = bricks.iter().map(|o| vec![0; o.edge_rows.len()]).collect();
     let mut order: Vec<(usize, usize)> = Vec::new(); // (brick, row) in global order
@@ -73,7 +77,7 @@ pub(crate) fn assemble(
         let (bk, kl) = owner(k, brick, dims[2]);
         for j in 0..=cells[1] {
             let (bj, jl) = owner(j, brick, dims[1]);
-            for &b in rows.get(&(bk, bj)).map_or(&[][..], Vec::as_slice) {
+            for &b in rows.get(&(bk, bj)).map_or(no_bricks, Vec::as_slice) {
                 let o = &bricks[b];
                 if kl >= o.owned[2] || jl >= o.owned[1] {
                     continue;
@@ -85,32 +89,40 @@ pub(crate) fn assemble(
             }
         }
     }
-    // Triangle corners to vertex numbers, brick by brick in parallel.
-    let resolved: Vec<Vec<[u32; 3]>> = bricks
-        .par_iter()
-        .map(|o| {
-            o.triangles
+    // Triangle corners to vertex numbers, brick by brick in parallel, consuming the local lists.
+    let resolved: Vec<(Vec<[u32; 3]>, Vec<u32>)> = triangles
+        .into_par_iter()
+        .enumerate()
+        .map(|(b, t)| {
+            let tris = t
+                .triangles
                 .iter()
-                .map(|t| t.map(|key| vertex_number(key, &bricks, &bases, &index, brick, dims)))
-                .collect()
+                .map(|tri| tri.map(|id| vertex_number(b, id, &bricks, &bases, &index, brick, dims)))
+                .collect();
+            (tris, t.triangle_rows)
         })
         .collect();
-    sink.reserve(count as usize, resolved.iter().map(Vec::len).sum());
+    sink.reserve(count as usize, resolved.iter().map(|r| r.0.len()).sum());
     let mut ids = Vec::with_capacity(count as usize);
     for &(b, r) in &order {
         let o = &bricks[b];
         let span = o.edge_rows[r] as usize..o.edge_rows[r + 1] as usize;
-        ids.extend(o.edges[span].iter().map(|e| sink.add_vertex(e.1)));
+        ids.extend(
+            o.edges[span]
+                .iter()
+                .map(|e| sink.add_vertex(e.1.as_dvec3())),
+        );
     }
+    let extents: Vec<[usize; 3]> = bricks.iter().map(|o| o.extent).collect();
+    drop((bricks, bases, order, index));
     for k in 0..cells[2] {
         let (bk, kl) = (k / brick, k % brick);
         for j in 0..cells[1] {
             let (bj, jl) = (j / brick, j % brick);
-            for &b in rows.get(&(bk, bj)).map_or(&[][..], Vec::as_slice) {
-                let o = &bricks[b];
-                let r = kl * o.extent[1] + jl;
-                let span = o.triangle_rows[r] as usize..o.triangle_rows[r + 1] as usize;
-                for t in &resolved[b][span] {
+            for &b in rows.get(&(bk, bj)).map_or(no_bricks, Vec::as_slice) {
+                let (tris, tri_rows) = &resolved[b];
+                let r = kl * extents[b][1] + jl;
+                for t in &tris[tri_rows[r] as usize..tri_rows[r + 1] as usize] {
                     sink.add_triangle(t.map(|v| ids[v as usize]));
                 }
             }
@@ -118,28 +130,35 @@ pub(crate) fn assemble(
     }
 }
 
-/// The number of the vertex on the edge with global key `key`.
+/// The number of the vertex on brick `b`'s local edge `id` (owned by `b` or by a neighbour).
 fn vertex_number(
-    key: u64,
-    bricks: &[BrickOutput],
+    b: usize,
+    id: u16,
+    bricks: &[BrickEdges],
     bases: &[Vec<u32>],
     index: &BrickIndex,
     brick: usize,
     dims: [usize; 3],
 ) -> u32 {
-    let (s, axis) = edge_parts(key);
-    let (bx, il) = owner(s[0], brick, dims[0]);
-    let (by, jl) = owner(s[1], brick, dims[1]);
-    let (bz, kl) = owner(s[2], brick, dims[2]);
-    let b = index
-        .get([bx, by, bz])
-        .expect("a crossing edge lies in a surface brick");
+    let (l, axis) = local_parts(id, brick);
     let o = &bricks[b];
+    let (owner_brick, [il, jl, kl]) = if (0..3).all(|a| l[a] < o.owned[a]) {
+        (b, l)
+    } else {
+        let g = [0, 1, 2].map(|a| o.coord[a] * brick + l[a]);
+        let parts = [0, 1, 2].map(|a| owner(g[a], brick, dims[a]));
+        let c = parts.map(|p| p.0);
+        let owner = index
+            .get(c)
+            .expect("a crossing edge lies in a surface brick");
+        (owner, parts.map(|p| p.1))
+    };
+    let o = &bricks[owner_brick];
     let r = kl * o.owned[1] + jl;
     let row = &o.edges[o.edge_rows[r] as usize..o.edge_rows[r + 1] as usize];
     let local = (il << 2 | axis) as u16;
     let at = row
         .binary_search_by_key(&local, |e| e.0)
         .expect("the owner lists the edge");
-    bases[b][r] + at as u32
+    bases[owner_brick][r] + at as u32
 }

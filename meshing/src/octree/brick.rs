@@ -4,36 +4,43 @@
 //! Ownership: a brick owns the edges whose lower sample lies in it — local coordinates below the
 //! brick size, or up to its extent for the last brick along an axis (the grid's far faces). An edge
 //! on a face shared with a culled neighbour never crosses the surface, so nothing is lost.
+//! Triangle corners are stored as brick-local edge ids (16 bits); [`super::assemble`] resolves
+//! the ones owned by a neighbour.
 
 use super::subdivide::Node;
 use crate::marching_cubes::table::{case_table, edge_origin};
 use crate::marching_cubes::{GridSpec, edge_vertex, inside};
-use glam::DVec3;
+use glam::Vec3;
 use solidkit_kernel::program::BatchScratch;
 
-/// Key of the grid edge along `axis` from global sample `(i, j, k)`.
-pub(crate) fn edge_key(i: usize, j: usize, k: usize, axis: usize) -> u64 {
-    ((((k as u64) << 20 | j as u64) << 20 | i as u64) << 2) | axis as u64
+/// Brick-local id of the edge along `axis` from local sample `(i, j, k)` (each in `0..=brick`).
+pub(crate) fn local_edge(i: usize, j: usize, k: usize, axis: usize, brick: usize) -> u16 {
+    let s = brick + 1;
+    ((((k * s + j) * s + i) << 2) | axis) as u16
 }
 
-/// The sample coordinates and axis of an edge key.
-pub(crate) fn edge_parts(key: u64) -> ([usize; 3], usize) {
-    let axis = (key & 3) as usize;
-    let rest = key >> 2;
-    let mask = (1u64 << 20) - 1;
-    (
-        [
-            (rest & mask) as usize,
-            (rest >> 20 & mask) as usize,
-            (rest >> 40) as usize,
-        ],
-        axis,
-    )
+/// Inverse of [`local_edge`].
+pub(crate) fn local_parts(id: u16, brick: usize) -> ([usize; 3], usize) {
+    let s = brick + 1;
+    let id = id as usize;
+    let (axis, rest) = (id & 3, id >> 2);
+    ([rest % s, (rest / s) % s, rest / (s * s)], axis)
 }
 
 /// What one brick contributes.
 #[derive(Debug, Default)]
 pub(crate) struct BrickOutput {
+    /// Its vertices.
+    pub edges: BrickEdges,
+    /// Its triangles.
+    pub triangles: BrickTriangles,
+    /// Samples evaluated.
+    pub samples: u64,
+}
+
+/// The crossing edges a brick owns, row by row.
+#[derive(Debug, Default)]
+pub(crate) struct BrickEdges {
     /// Brick coordinates (cell minimum / brick size).
     pub coord: [usize; 3],
     /// Owned sample rows per axis: lower samples with local coordinate below this are owned.
@@ -41,53 +48,65 @@ pub(crate) struct BrickOutput {
     /// Cells per axis in the brick.
     pub extent: [usize; 3],
     /// Owned crossing edges as (local `i << 2 | axis`, vertex), row by row (`k`, then `j`).
-    pub edges: Vec<(u16, DVec3)>,
+    pub edges: Vec<(u16, Vec3)>,
     /// Start of each owned row `(k, j)` in `edges` (`owned[2] · owned[1] + 1` entries).
     pub edge_rows: Vec<u32>,
-    /// Triangles as corner edge keys, in cell order (`k`, `j`, `i`) then case order.
-    pub triangles: Vec<[u64; 3]>,
-    /// Start of each cell row `(k, j)` in `triangles` (`extent[2] · extent[1] + 1` entries).
-    pub triangle_rows: Vec<u32>,
-    /// Samples evaluated.
-    pub samples: u64,
 }
 
-/// Samples the brick's points (x fastest) with its program.
-fn sample(node: &Node, spec: &GridSpec, n: [usize; 3]) -> Vec<f32> {
+/// A brick's triangles, row by row.
+#[derive(Debug, Default)]
+pub(crate) struct BrickTriangles {
+    /// Triangles as brick-local corner edge ids, in cell order (`k`, `j`, `i`) then case order.
+    pub triangles: Vec<[u16; 3]>,
+    /// Start of each cell row `(k, j)` in `triangles` (`extent[2] · extent[1] + 1` entries).
+    pub triangle_rows: Vec<u32>,
+}
+
+/// Per-thread buffers reused from brick to brick.
+#[derive(Default)]
+pub(crate) struct BrickScratch {
+    x: Vec<f32>,
+    y: Vec<f32>,
+    z: Vec<f32>,
+    values: Vec<f32>,
+    inside: Vec<u8>,
+    batch: BatchScratch,
+}
+
+/// Samples the brick's points (x fastest) with its program into `s.values` and `s.inside`.
+fn sample(node: &Node, spec: &GridSpec, n: [usize; 3], s: &mut BrickScratch) {
     let count = n[0] * n[1] * n[2];
-    let xs: Vec<f32> = (0..n[0])
-        .map(|i| spec.coordinate(0, node.min[0] + i))
-        .collect();
-    let (mut x, mut y, mut z) = (
-        Vec::with_capacity(count),
-        Vec::with_capacity(count),
-        Vec::with_capacity(count),
-    );
+    for v in [&mut s.x, &mut s.y, &mut s.z] {
+        v.clear();
+    }
     for k in 0..n[2] {
         let zk = spec.coordinate(2, node.min[2] + k);
         for j in 0..n[1] {
             let yj = spec.coordinate(1, node.min[1] + j);
-            x.extend_from_slice(&xs);
-            y.extend(std::iter::repeat_n(yj, n[0]));
-            z.extend(std::iter::repeat_n(zk, n[0]));
+            s.x.extend((0..n[0]).map(|i| spec.coordinate(0, node.min[0] + i)));
+            s.y.extend(std::iter::repeat_n(yj, n[0]));
+            s.z.extend(std::iter::repeat_n(zk, n[0]));
         }
     }
-    let mut values = vec![0f32; count];
-    node.program.eval_many(
-        &x,
-        &y,
-        &z,
-        &mut values,
-        &mut BatchScratch::new(&node.program),
-    );
-    values
+    s.values.clear();
+    s.values.resize(count, 0.0);
+    node.program
+        .eval_many(&s.x, &s.y, &s.z, &mut s.values, &mut s.batch);
+    s.inside.clear();
+    s.inside
+        .extend(s.values.iter().map(|&v| u8::from(inside(v))));
 }
 
-pub(crate) fn process(node: &Node, spec: &GridSpec, brick: usize) -> BrickOutput {
+pub(crate) fn process(
+    node: &Node,
+    spec: &GridSpec,
+    brick: usize,
+    s: &mut BrickScratch,
+) -> BrickOutput {
     let e = node.extent(spec);
     let n = [e[0] + 1, e[1] + 1, e[2] + 1];
-    let values = sample(node, spec, n);
-    let at = |i: usize, j: usize, k: usize| values[i + n[0] * (j + n[1] * k)];
+    sample(node, spec, n, s);
+    let (nx, nxy) = (n[0], n[0] * n[1]);
     let owned = [0, 1, 2].map(|a| {
         if node.min[a] + e[a] == spec.cells[a] {
             e[a] + 1
@@ -95,59 +114,77 @@ pub(crate) fn process(node: &Node, spec: &GridSpec, brick: usize) -> BrickOutput
             brick.min(e[a])
         }
     });
-    let mut out = BrickOutput {
+    let mut out = BrickEdges {
         coord: node.min.map(|m| m / brick),
         owned,
         extent: e,
-        samples: values.len() as u64,
         ..Default::default()
     };
     let point = |i: usize, j: usize, k: usize| {
         spec.point(node.min[0] + i, node.min[1] + j, node.min[2] + k)
     };
+    out.edge_rows.reserve(owned[2] * owned[1] + 1);
     out.edge_rows.push(0);
     for k in 0..owned[2] {
         for j in 0..owned[1] {
             for i in 0..owned[0] {
-                let v = at(i, j, k);
-                let ends = [
-                    (i + 1 < n[0], (i + 1, j, k)),
-                    (j + 1 < n[1], (i, j + 1, k)),
-                    (k + 1 < n[2], (i, j, k + 1)),
-                ];
-                for (axis, &(exists, (a, b, c))) in ends.iter().enumerate() {
-                    if !exists {
+                let idx = i + nx * j + nxy * k;
+                let here = s.inside[idx];
+                let ends = [(i + 1 < n[0], 1), (j + 1 < n[1], nx), (k + 1 < n[2], nxy)];
+                for (axis, &(exists, step)) in ends.iter().enumerate() {
+                    if !exists || s.inside[idx + step] == here {
                         continue;
                     }
-                    if let Some(q) = edge_vertex(point(i, j, k), v, point(a, b, c), at(a, b, c)) {
-                        out.edges.push(((i << 2 | axis) as u16, q));
-                    }
+                    let o = [
+                        usize::from(axis == 0),
+                        usize::from(axis == 1),
+                        usize::from(axis == 2),
+                    ];
+                    let q = edge_vertex(
+                        point(i, j, k),
+                        s.values[idx],
+                        point(i + o[0], j + o[1], k + o[2]),
+                        s.values[idx + step],
+                    )
+                    .expect("sign change");
+                    out.edges.push(((i << 2 | axis) as u16, q.as_vec3()));
                 }
             }
             out.edge_rows.push(out.edges.len() as u32);
         }
     }
+    out.edges.shrink_to_fit();
+    let edges = out;
+    let mut out = BrickTriangles::default();
     let table = case_table();
+    let corner = [0, 1, nx, nx + 1, nxy, nxy + 1, nxy + nx, nxy + nx + 1];
+    out.triangle_rows.reserve(e[2] * e[1] + 1);
     out.triangle_rows.push(0);
     for k in 0..e[2] {
         for j in 0..e[1] {
             for i in 0..e[0] {
+                let base = i + nx * j + nxy * k;
                 let mut mask = 0usize;
-                for c in 0..8 {
-                    if inside(at(i + (c & 1), j + (c >> 1 & 1), k + (c >> 2 & 1))) {
-                        mask |= 1 << c;
-                    }
+                for (c, off) in corner.iter().enumerate() {
+                    mask |= (s.inside[base + off] as usize) << c;
                 }
-                let (gi, gj, gk) = (node.min[0] + i, node.min[1] + j, node.min[2] + k);
+                if mask == 0 || mask == 255 {
+                    continue;
+                }
                 for tri in &table.cases[mask] {
                     out.triangles.push(tri.map(|edge| {
                         let (axis, o) = edge_origin(edge);
-                        edge_key(gi + o[0], gj + o[1], gk + o[2], axis)
+                        local_edge(i + o[0], j + o[1], k + o[2], axis, brick)
                     }));
                 }
             }
             out.triangle_rows.push(out.triangles.len() as u32);
         }
     }
-    out
+    out.triangles.shrink_to_fit();
+    BrickOutput {
+        edges,
+        triangles: out,
+        samples: s.values.len() as u64,
+    }
 }

@@ -92,7 +92,7 @@ impl SparseOptions {
 }
 
 /// What sparse meshing did.
-#[derive(Debug, Clone, Default, PartialEq, Eq)]
+#[derive(Debug, Clone, Default, PartialEq)]
 pub struct MeshStats {
     /// Octree boxes whose interval was evaluated.
     pub boxes_evaluated: u64,
@@ -102,4 +102,10 @@ pub struct MeshStats {
     pub samples_evaluated: u64,
     /// Sum over leaf bricks of their pruned program length (for the mean).
     pub leaf_instructions: u64,
+    /// Seconds spent classifying and pruning octree boxes.
+    pub octree_s: f64,
+    /// Seconds spent sampling and triangulating leaf bricks.
+    pub bricks_s: f64,
+    /// Seconds spent numbering and emitting the mesh.
+    pub assemble_s: f64,
 }

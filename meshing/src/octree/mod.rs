@@ -46,16 +46,17 @@ pub fn mesh_sparse_into(
     let t0 = std::time::Instant::now();
     let leaves = subdivide::surface_bricks(program, &spec, opts, &mut stats)?;
     let t1 = std::time::Instant::now();
+    stats.octree_s = (t1 - t0).as_secs_f64();
     stats.surface_bricks = leaves.len();
     let done = std::sync::atomic::AtomicUsize::new(0);
     let total = leaves.len();
-    let outputs: Vec<brick::BrickOutput> = leaves
+    let mut outputs: Vec<brick::BrickOutput> = leaves
         .par_iter()
-        .map(|leaf| {
+        .map_init(brick::BrickScratch::default, |scratch, leaf| {
             if opts.is_cancelled() {
                 return brick::BrickOutput::default();
             }
-            let out = brick::process(leaf, &spec, opts.brick_size());
+            let out = brick::process(leaf, &spec, opts.brick_size(), scratch);
             let n = done.fetch_add(1, Ordering::Relaxed) + 1;
             opts.report(Progress {
                 stage: "bricks",
@@ -68,18 +69,15 @@ pub fn mesh_sparse_into(
     if opts.is_cancelled() {
         return Err(Cancelled);
     }
+    drop(leaves);
     stats.samples_evaluated = outputs.iter().map(|o| o.samples).sum();
     let t2 = std::time::Instant::now();
-    assemble::assemble(outputs, spec.cells, opts.brick_size(), sink);
-    if std::env::var_os("SOLIDKIT_TRACE").is_some() {
-        let t3 = std::time::Instant::now();
-        eprintln!(
-            "octree {:?} bricks {:?} assemble {:?}",
-            t1 - t0,
-            t2 - t1,
-            t3 - t2
-        );
-    }
+    stats.bricks_s = (t2 - t1).as_secs_f64();
+    outputs.sort_unstable_by_key(|o| (o.edges.coord[2], o.edges.coord[1], o.edges.coord[0]));
+    let (edges, triangles): (Vec<_>, Vec<_>) =
+        outputs.into_iter().map(|o| (o.edges, o.triangles)).unzip();
+    assemble::assemble(edges, triangles, spec.cells, opts.brick_size(), sink);
+    stats.assemble_s = t2.elapsed().as_secs_f64();
     Ok(stats)
 }
 

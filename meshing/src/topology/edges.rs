@@ -1,9 +1,11 @@
 //! The undirected edge table.
 //!
 //! Faces are seen as loops of *corners*: corner `c` sits at vertex `origin(c)` and its face's
-//! directed edge runs from `c` to corner `next(c)`. Every directed edge is keyed by its unordered
-//! vertex pair and the table is sorted by key, so the corners whose edges share an undirected edge
-//! are adjacent. Sorting is O(n log n), parallel and deterministic (keys are unique).
+//! directed edge runs from `c` to corner `next(c)`. Every directed edge is filed under the smaller
+//! of its two vertices (a counting sort into per-vertex buckets, linear time), then each small
+//! bucket is sorted by the other vertex and the corner, so the corners whose edges share an
+//! undirected edge are adjacent, in ascending (smaller, larger) vertex order. Eight bytes per
+//! corner; deterministic; supports up to 2³² corners.
 //!
 //! Both the topology report (triangles) and the half-edge builder (polygons) use this table.
 
@@ -54,29 +56,55 @@ pub(crate) enum EdgeKind {
     NonManifold,
 }
 
-/// The key of the undirected edge `{a, b}`: smaller vertex in the high half.
-fn edge_key(a: u32, b: u32) -> u64 {
-    let (lo, hi) = if a < b { (a, b) } else { (b, a) };
-    (u64::from(lo) << 32) | u64::from(hi)
-}
-
-/// The directed edges of all faces, sorted by undirected key.
+/// The directed edges of all faces, grouped by undirected edge.
 #[derive(Debug, Clone)]
 pub(crate) struct EdgeTable {
-    entries: Vec<(u64, usize)>,
+    /// Start of each vertex's bucket in `entries` (vertex count + 1 entries).
+    starts: Vec<usize>,
+    /// `larger vertex << 32 | corner`, bucket by bucket, each bucket sorted.
+    entries: Vec<u64>,
     edge_count: usize,
 }
 
 impl EdgeTable {
     /// The table of every corner's outgoing edge.
     pub(crate) fn build<C: CornerLoops + ?Sized>(loops: &C) -> Self {
-        let mut entries: Vec<(u64, usize)> = (0..loops.corner_count())
+        let n = loops.corner_count();
+        assert!(
+            n <= u32::MAX as usize,
+            "edge table supports at most 2^32 corners"
+        );
+        let vertex_count = (0..n)
             .into_par_iter()
-            .map(|c| (edge_key(loops.origin(c), loops.dest(c)), c))
-            .collect();
-        entries.par_sort_unstable();
-        let edge_count = entries.chunk_by(|a, b| a.0 == b.0).count();
+            .map(|c| loops.origin(c) as usize + 1)
+            .max()
+            .unwrap_or(0);
+        let mut starts = vec![0usize; vertex_count + 1];
+        for c in 0..n {
+            starts[loops.origin(c).min(loops.dest(c)) as usize + 1] += 1;
+        }
+        for v in 0..vertex_count {
+            starts[v + 1] += starts[v];
+        }
+        let mut cursor = starts.clone();
+        let mut entries = vec![0u64; n];
+        for c in 0..n {
+            let (a, b) = (loops.origin(c), loops.dest(c));
+            let slot = &mut cursor[a.min(b) as usize];
+            entries[*slot] = (u64::from(a.max(b)) << 32) | c as u64;
+            *slot += 1;
+        }
+        sort_buckets(&mut entries, &starts);
+        let edge_count = (0..vertex_count)
+            .into_par_iter()
+            .map(|v| {
+                entries[starts[v]..starts[v + 1]]
+                    .chunk_by(|x, y| x >> 32 == y >> 32)
+                    .count()
+            })
+            .sum();
         Self {
+            starts,
             entries,
             edge_count,
         }
@@ -87,42 +115,69 @@ impl EdgeTable {
         self.edge_count
     }
 
-    /// The undirected edges in ascending key order.
+    /// The undirected edges in ascending (smaller, larger) vertex order.
     pub(crate) fn edges(&self) -> impl Iterator<Item = Edge<'_>> {
-        self.entries
-            .chunk_by(|a, b| a.0 == b.0)
-            .map(|run| Edge { run })
+        self.starts.windows(2).enumerate().flat_map(move |(v, w)| {
+            self.entries[w[0]..w[1]]
+                .chunk_by(|x, y| x >> 32 == y >> 32)
+                .map(move |run| Edge { lo: v as u32, run })
+        })
     }
+}
+
+/// Sorts every bucket, in parallel over groups of buckets.
+fn sort_buckets(entries: &mut [u64], starts: &[usize]) {
+    const GROUP: usize = 1 << 14;
+    let mut pieces: Vec<&mut [u64]> = Vec::new();
+    let mut rest = entries;
+    let mut at = 0;
+    for g in (0..starts.len() - 1).step_by(GROUP) {
+        let end = starts[(g + GROUP).min(starts.len() - 1)];
+        let (piece, tail) = rest.split_at_mut(end - at);
+        pieces.push(piece);
+        rest = tail;
+        at = end;
+    }
+    pieces.into_par_iter().enumerate().for_each(|(i, piece)| {
+        let first = i * GROUP;
+        let base = starts[first];
+        for v in first..(first + GROUP).min(starts.len() - 1) {
+            piece[starts[v] - base..starts[v + 1] - base].sort_unstable();
+        }
+    });
 }
 
 /// One undirected edge: the corners whose outgoing edge it is, in ascending corner order.
 #[derive(Debug, Clone, Copy)]
 pub(crate) struct Edge<'a> {
-    run: &'a [(u64, usize)],
+    lo: u32,
+    run: &'a [u64],
 }
 
 impl Edge<'_> {
     /// The two vertices, smaller first.
     pub(crate) fn vertices(&self) -> [u32; 2] {
-        let key = self.run[0].0;
-        [(key >> 32) as u32, key as u32]
+        [self.lo, (self.run[0] >> 32) as u32]
     }
 
     /// The corners whose outgoing edge this is (one per face use).
     pub(crate) fn corners(&self) -> impl Iterator<Item = usize> + '_ {
-        self.run.iter().map(|&(_, c)| c)
+        self.run.iter().map(|&e| (e & 0xFFFF_FFFF) as usize)
     }
 
     /// The lowest corner using this edge.
     pub(crate) fn first_corner(&self) -> usize {
-        self.run[0].1
+        (self.run[0] & 0xFFFF_FFFF) as usize
     }
 
     /// How the faces use this edge.
     pub(crate) fn kind<C: CornerLoops + ?Sized>(&self, loops: &C) -> EdgeKind {
+        let corner = |e: u64| (e & 0xFFFF_FFFF) as usize;
         match self.run {
             [_] => EdgeKind::Boundary,
-            [(_, a), (_, b)] if loops.origin(*a) == loops.origin(*b) => EdgeKind::Inconsistent,
+            [a, b] if loops.origin(corner(*a)) == loops.origin(corner(*b)) => {
+                EdgeKind::Inconsistent
+            }
             [_, _] => EdgeKind::Manifold,
             _ => EdgeKind::NonManifold,
         }
