@@ -3,7 +3,7 @@
 //! then `i` and case order. Each grid row is covered by the bricks of one brick row, visited in
 //! `x` order, so concatenating their row segments gives the dense order.
 
-use super::brick::{BrickEdges, BrickTriangles, local_parts};
+use super::brick::{BrickEdges, BrickTriangles, LOCAL_EDGE_IDS, local_edge, local_parts};
 use crate::sink::MeshSink;
 use rayon::prelude::*;
 use std::collections::HashMap;
@@ -90,17 +90,42 @@ pub(crate) fn assemble(
         }
     }
     // Triangle corners to vertex numbers, brick by brick in parallel, consuming the local lists.
+    // A per-thread table maps the brick's own edge ids to numbers; neighbours are searched.
     let resolved: Vec<(Vec<[u32; 3]>, Vec<u32>)> = triangles
         .into_par_iter()
         .enumerate()
-        .map(|(b, t)| {
-            let tris = t
-                .triangles
-                .iter()
-                .map(|tri| tri.map(|id| vertex_number(b, id, &bricks, &bases, &index, brick, dims)))
-                .collect();
-            (tris, t.triangle_rows)
-        })
+        .map_init(
+            || vec![0u32; LOCAL_EDGE_IDS],
+            |own, (b, t)| {
+                let o = &bricks[b];
+                for r in 0..o.edge_rows.len() - 1 {
+                    let (kl, jl) = (r / o.owned[1], r % o.owned[1]);
+                    let start = o.edge_rows[r] as usize;
+                    for (p, e) in o.edges[start..o.edge_rows[r + 1] as usize]
+                        .iter()
+                        .enumerate()
+                    {
+                        let id = local_edge((e.0 >> 2) as usize, jl, kl, (e.0 & 3) as usize);
+                        own[id as usize] = bases[b][r] + p as u32;
+                    }
+                }
+                let tris = t
+                    .triangles
+                    .iter()
+                    .map(|tri| {
+                        tri.map(|id| {
+                            let (l, _) = local_parts(id);
+                            if l[0] < o.owned[0] && l[1] < o.owned[1] && l[2] < o.owned[2] {
+                                own[id as usize]
+                            } else {
+                                neighbour_vertex(b, id, &bricks, &bases, &index, brick, dims)
+                            }
+                        })
+                    })
+                    .collect();
+                (tris, t.triangle_rows)
+            },
+        )
         .collect();
     sink.reserve(count as usize, resolved.iter().map(|r| r.0.len()).sum());
     let mut ids = Vec::with_capacity(count as usize);
@@ -130,8 +155,8 @@ pub(crate) fn assemble(
     }
 }
 
-/// The number of the vertex on brick `b`'s local edge `id` (owned by `b` or by a neighbour).
-fn vertex_number(
+/// The number of the vertex on brick `b`'s local edge `id` when a neighbour owns it.
+fn neighbour_vertex(
     b: usize,
     id: u16,
     bricks: &[BrickEdges],
@@ -140,19 +165,14 @@ fn vertex_number(
     brick: usize,
     dims: [usize; 3],
 ) -> u32 {
-    let (l, axis) = local_parts(id, brick);
+    let (l, axis) = local_parts(id);
     let o = &bricks[b];
-    let (owner_brick, [il, jl, kl]) = if (0..3).all(|a| l[a] < o.owned[a]) {
-        (b, l)
-    } else {
-        let g = [0, 1, 2].map(|a| o.coord[a] * brick + l[a]);
-        let parts = [0, 1, 2].map(|a| owner(g[a], brick, dims[a]));
-        let c = parts.map(|p| p.0);
-        let owner = index
-            .get(c)
-            .expect("a crossing edge lies in a surface brick");
-        (owner, parts.map(|p| p.1))
-    };
+    let g = [0, 1, 2].map(|a| o.coord[a] * brick + l[a]);
+    let parts = [0, 1, 2].map(|a| owner(g[a], brick, dims[a]));
+    let owner_brick = index
+        .get(parts.map(|p| p.0))
+        .expect("a crossing edge lies in a surface brick");
+    let [il, jl, kl] = parts.map(|p| p.1);
     let o = &bricks[owner_brick];
     let r = kl * o.owned[1] + jl;
     let row = &o.edges[o.edge_rows[r] as usize..o.edge_rows[r + 1] as usize];

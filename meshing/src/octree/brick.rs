@@ -13,18 +13,23 @@ use crate::marching_cubes::{GridSpec, edge_vertex, inside};
 use glam::Vec3;
 use solidkit_kernel::program::BatchScratch;
 
-/// Brick-local id of the edge along `axis` from local sample `(i, j, k)` (each in `0..=brick`).
-pub(crate) fn local_edge(i: usize, j: usize, k: usize, axis: usize, brick: usize) -> u16 {
-    let s = brick + 1;
-    ((((k * s + j) * s + i) << 2) | axis) as u16
+/// Largest brick size: local sample coordinates `0..=MAX_BRICK` fit in 4 bits each.
+pub(crate) const MAX_BRICK: usize = 8;
+
+/// Number of distinct local edge ids (14 bits).
+pub(crate) const LOCAL_EDGE_IDS: usize = 1 << 14;
+
+/// Brick-local id of the edge along `axis` from local sample `(i, j, k)` (each in `0..=8`).
+#[inline]
+pub(crate) fn local_edge(i: usize, j: usize, k: usize, axis: usize) -> u16 {
+    ((k << 10) | (j << 6) | (i << 2) | axis) as u16
 }
 
 /// Inverse of [`local_edge`].
-pub(crate) fn local_parts(id: u16, brick: usize) -> ([usize; 3], usize) {
-    let s = brick + 1;
+#[inline]
+pub(crate) fn local_parts(id: u16) -> ([usize; 3], usize) {
     let id = id as usize;
-    let (axis, rest) = (id & 3, id >> 2);
-    ([rest % s, (rest / s) % s, rest / (s * s)], axis)
+    ([(id >> 2) & 15, (id >> 6) & 15, id >> 10], id & 3)
 }
 
 /// What one brick contributes.
@@ -174,7 +179,7 @@ pub(crate) fn process(
                 for tri in &table.cases[mask] {
                     out.triangles.push(tri.map(|edge| {
                         let (axis, o) = edge_origin(edge);
-                        local_edge(i + o[0], j + o[1], k + o[2], axis, brick)
+                        local_edge(i + o[0], j + o[1], k + o[2], axis)
                     }));
                 }
             }

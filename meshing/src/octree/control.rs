@@ -46,7 +46,7 @@ pub type ProgressFn = Arc<dyn Fn(Progress) + Send + Sync>;
 /// Options of sparse meshing.
 #[derive(Clone)]
 pub struct SparseOptions {
-    /// Cells per side of a leaf brick (a power of two; 8 by default).
+    /// Cells per side of a leaf brick (a power of two, at most 8; 8 by default).
     pub brick_cells: usize,
     /// Stops the mesher when cancelled.
     pub cancel: Option<CancelToken>,
@@ -81,7 +81,9 @@ impl SparseOptions {
 
     /// The brick size in cells (a power of two).
     pub(crate) fn brick_size(&self) -> usize {
-        self.brick_cells.max(1).next_power_of_two()
+        self.brick_cells
+            .clamp(1, super::brick::MAX_BRICK)
+            .next_power_of_two()
     }
 
     pub(crate) fn report(&self, p: Progress) {

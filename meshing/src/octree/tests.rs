@@ -84,7 +84,7 @@ fn brick_size_does_not_change_the_mesh() {
     let p = solid.compile();
     let g = spec(solid, 50);
     let reference = mesh_dense(&p, g);
-    for brick_cells in [2, 4, 16] {
+    for brick_cells in [1, 2, 4] {
         let opts = SparseOptions {
             brick_cells,
             ..Default::default()
