@@ -74,6 +74,19 @@ fn pair(regs: &mut [f32], dst: usize, src: usize, n: usize) -> (&mut [f32], &[f3
 }
 
 crate::simd::wide_loop! {
+    /// Adds a translation to coordinate arrays (all of the same length).
+    fn translate_chunk(t: [f32; 3], x: &[f32], y: &[f32], z: &[f32], lx: &mut [f32], ly: &mut [f32], lz: &mut [f32]) {
+        let n = lx.len();
+        let (x, y, z, ly, lz) = (&x[..n], &y[..n], &z[..n], &mut ly[..n], &mut lz[..n]);
+        for k in 0..n {
+            lx[k] = x[k] + t[0];
+            ly[k] = y[k] + t[1];
+            lz[k] = z[k] + t[2];
+        }
+    }
+}
+
+crate::simd::wide_loop! {
     /// Applies a row-major 3 × 4 affine map to coordinate arrays (all of the same length).
     fn transform_chunk(m: &[[f32; 4]; 3], x: &[f32], y: &[f32], z: &[f32], lx: &mut [f32], ly: &mut [f32], lz: &mut [f32]) {
         let n = lx.len();
@@ -115,15 +128,14 @@ impl Program {
                     } else {
                         let [lx, ly, lz] = &mut s.local;
                         if local_frame != frame {
-                            transform_chunk(
-                                &f.rows_f32,
-                                &x[..n],
-                                &y[..n],
-                                &z[..n],
-                                &mut lx[..n],
-                                &mut ly[..n],
-                                &mut lz[..n],
-                            );
+                            let (x, y, z) = (&x[..n], &y[..n], &z[..n]);
+                            let (lx, ly, lz) = (&mut lx[..n], &mut ly[..n], &mut lz[..n]);
+                            if f.translation {
+                                let t = [f.rows_f32[0][3], f.rows_f32[1][3], f.rows_f32[2][3]];
+                                translate_chunk(t, x, y, z, lx, ly, lz);
+                            } else {
+                                transform_chunk(&f.rows_f32, x, y, z, lx, ly, lz);
+                            }
                             local_frame = frame;
                         }
                         prim.values_f32(&lx[..n], &ly[..n], &lz[..n], out_reg);

@@ -13,6 +13,8 @@ pub struct Frame {
     pub sigma: f64,
     /// True for the identity map with `σ = 1` (evaluators skip the transform).
     pub identity: bool,
+    /// True when the map is a pure translation with `σ = 1` (evaluators only add).
+    pub translation: bool,
     /// `inverse` as row-major 3 × 4 single-precision coefficients.
     pub rows_f32: [[f32; 4]; 3],
 }
@@ -38,6 +40,7 @@ impl Frame {
             inverse,
             sigma,
             identity: inverse == DAffine3::IDENTITY && sigma == 1.0,
+            translation: inverse.matrix3 == glam::DMat3::IDENTITY && sigma == 1.0,
             rows_f32: [row(0), row(1), row(2)],
         }
     }
@@ -60,6 +63,9 @@ impl Frame {
     pub fn apply_box(&self, b: &Aabb) -> Aabb {
         if self.identity {
             *b
+        } else if self.translation {
+            let t = self.inverse.translation;
+            Aabb::new(b.min + t, b.max + t)
         } else {
             b.transformed(&self.inverse)
         }

@@ -2,8 +2,10 @@
 //! identical subtrees and equal leaves shared, trivial instructions simplified on the way.
 
 use super::{Frame, Infinity, Instr, Program};
+use crate::Aabb;
 use crate::primitive::{Primitive, Shape};
-use crate::solid::{NodeKind, Solid};
+use crate::solid::{NodeKind, Solid, node_bbox};
+use glam::DVec3;
 use std::collections::HashMap;
 
 /// Bucket key for leaves that may be equal: frame, kind and bounding box bits.
@@ -17,7 +19,7 @@ struct Lowerer {
     frame_ids: HashMap<[u64; 13], u32>,
     instr_ids: HashMap<Instr, u32>,
     /// (node address, frame) → value: a shared subtree under the same frame is lowered once.
-    memo: HashMap<(usize, u32), u32>,
+    memo: HashMap<(usize, u32), (u32, Aabb)>,
     leaves: HashMap<LeafKey, Vec<u32>>,
 }
 
@@ -93,7 +95,9 @@ impl Lowerer {
     }
 
     /// The value of a node whose children's values are `c`.
-    fn combine(&mut self, kind: &NodeKind, frame: u32, c: &[u32]) -> u32 {
+    fn combine(&mut self, kind: &NodeKind, frame: u32, children: &[(u32, Aabb)]) -> u32 {
+        let c: Vec<u32> = children.iter().map(|x| x.0).collect();
+        let c = c.as_slice();
         match kind {
             NodeKind::Primitive(p) => self.leaf(p, frame),
             NodeKind::SmoothUnion { radius } => {
@@ -104,7 +108,11 @@ impl Lowerer {
             NodeKind::SmoothIntersection { radius } => {
                 let negated: Vec<u32> = c.iter().map(|&x| self.emit(Instr::Neg(x))).collect();
                 let r = super::Bits::of(*radius);
-                let m = self.fold(&negated, |a, b| Instr::SmoothMin(a, b, r), Infinity::Positive);
+                let m = self.fold(
+                    &negated,
+                    |a, b| Instr::SmoothMin(a, b, r),
+                    Infinity::Positive,
+                );
                 self.emit(Instr::Neg(m))
             }
             // a minus b = smooth max(a, −b) = −smooth min(−a, b).
@@ -114,7 +122,9 @@ impl Lowerer {
                 };
                 let r = super::Bits::of(*radius);
                 let start = self.emit(Instr::Neg(first));
-                let m = rest.iter().fold(start, |acc, &x| self.emit(Instr::SmoothMin(acc, x, r)));
+                let m = rest
+                    .iter()
+                    .fold(start, |acc, &x| self.emit(Instr::SmoothMin(acc, x, r)));
                 self.emit(Instr::Neg(m))
             }
             NodeKind::Offset { distance } => {
@@ -126,20 +136,67 @@ impl Lowerer {
                 let a = self.emit(Instr::Abs(child));
                 self.emit(Instr::AddConst(a, super::Bits::of(-0.5 * thickness)))
             }
-            NodeKind::Union | NodeKind::Transform(_) => {
-                self.fold(c, Instr::Min, Infinity::Positive)
-            }
-            NodeKind::Intersection => self.fold(c, Instr::Max, Infinity::Negative),
+            NodeKind::Transform(_) => self.fold(c, Instr::Min, Infinity::Positive),
+            NodeKind::Union => self.balanced(children, Instr::Min, Infinity::Positive),
+            NodeKind::Intersection => self.balanced(children, Instr::Max, Infinity::Negative),
+            // max(a, −b₁, −b₂, …) = max(a, −min(b₁, b₂, …)), exactly.
             NodeKind::Difference => {
-                let Some((&first, rest)) = c.split_first() else {
+                let Some((first, rest)) = children.split_first() else {
                     return self.emit(Instr::Const(Infinity::Positive));
                 };
-                rest.iter().fold(first, |acc, &x| {
-                    let n = self.emit(Instr::Neg(x));
-                    self.emit(Instr::Max(acc, n))
-                })
+                if rest.is_empty() {
+                    return first.0;
+                }
+                let cutters = self.balanced(rest, Instr::Min, Infinity::Positive);
+                let n = self.emit(Instr::Neg(cutters));
+                self.emit(Instr::Max(first.0, n))
             }
         }
+    }
+
+    /// A balanced tree of `op` over the operands, ordered along a Morton curve of their box
+    /// centres, so every subtree is spatially compact and interval pruning can drop whole
+    /// subtrees far from a box. (Min and max are exact, so the shape does not change values.)
+    fn balanced(
+        &mut self,
+        children: &[(u32, Aabb)],
+        op: impl Fn(u32, u32) -> Instr,
+        empty: Infinity,
+    ) -> u32 {
+        if children.is_empty() {
+            return self.emit(Instr::Const(empty));
+        }
+        let finite = children
+            .iter()
+            .filter(|c| c.1.is_finite())
+            .fold(Aabb::empty(), |a, c| a.union(&c.1));
+        let mut items: Vec<(u64, u32)> = children
+            .iter()
+            .map(|(v, b)| {
+                (
+                    if b.is_finite() {
+                        morton(b.center(), &finite)
+                    } else {
+                        0
+                    },
+                    *v,
+                )
+            })
+            .collect();
+        items.sort_by_key(|i| i.0);
+        let mut level: Vec<u32> = items.into_iter().map(|i| i.1).collect();
+        while level.len() > 1 {
+            let next: Vec<u32> = level
+                .chunks(2)
+                .map(|pair| match *pair {
+                    [a, b] => self.emit(op(a, b)),
+                    [a] => a,
+                    _ => unreachable!("chunks of two"),
+                })
+                .collect();
+            level = next;
+        }
+        level[0]
     }
 
     fn fold(&mut self, c: &[u32], op: impl Fn(u32, u32) -> Instr, empty: Infinity) -> u32 {
@@ -157,7 +214,8 @@ impl Solid {
         let world = l.frame_id(Frame::identity());
         // Work list of (node, frame, children visited); values of finished children on `done`.
         let mut stack: Vec<(&Solid, u32, usize)> = vec![(self, world, 0)];
-        let mut done: Vec<u32> = Vec::new();
+        // Values of finished children, with their boxes in their parent's coordinates.
+        let mut done: Vec<(u32, Aabb)> = Vec::new();
         while let Some(top) = stack.last_mut() {
             let (solid, frame, next) = *top;
             let key = (std::sync::Arc::as_ptr(&solid.0) as usize, frame);
@@ -185,12 +243,14 @@ impl Solid {
             stack.pop();
             let n = if leaf { 0 } else { solid.children().len() };
             let start = done.len() - n;
-            let children: Vec<u32> = done.split_off(start);
+            let children: Vec<(u32, Aabb)> = done.split_off(start);
+            let boxes: Vec<Aabb> = children.iter().map(|c| c.1).collect();
+            let bbox = node_bbox(solid.kind(), &boxes);
             let v = l.combine(solid.kind(), frame, &children);
-            l.memo.insert(key, v);
-            done.push(v);
+            l.memo.insert(key, (v, bbox));
+            done.push((v, bbox));
         }
-        let result = done.pop().expect("root value");
+        let result = done.pop().expect("root value").0;
         let (instrs, result) = compact(&l.instrs, result);
         Program::from_parts(
             instrs,
@@ -199,6 +259,22 @@ impl Solid {
         )
         .with_result_last(result)
     }
+}
+
+/// Morton code (10 bits per axis) of `p` within `domain`.
+fn morton(p: DVec3, domain: &Aabb) -> u64 {
+    let size = domain.size().max(DVec3::splat(1e-300));
+    let q = ((p - domain.min) / size * 1023.0).clamp(DVec3::ZERO, DVec3::splat(1023.0));
+    let spread = |v: f64| {
+        let mut x = v as u64;
+        let mut out = 0u64;
+        for bit in 0..10 {
+            out |= (x & 1) << (3 * bit);
+            x >>= 1;
+        }
+        out
+    };
+    spread(q.x) | spread(q.y) << 1 | spread(q.z) << 2
 }
 
 /// Keeps only instructions the result depends on (in order) and renumbers operands; returns the

@@ -7,6 +7,7 @@
 mod build;
 mod traverse;
 
+pub(crate) use traverse::node_bbox;
 pub(crate) use traverse::shorten_path as shorten_path_pub;
 
 use crate::primitive::Primitive;
@@ -90,7 +91,10 @@ impl NodeKind {
 
     /// True for the kinds that take exactly one child (transforms, offset, shell).
     pub fn is_unary(&self) -> bool {
-        matches!(self, NodeKind::Transform(_) | NodeKind::Offset { .. } | NodeKind::Shell { .. })
+        matches!(
+            self,
+            NodeKind::Transform(_) | NodeKind::Offset { .. } | NodeKind::Shell { .. }
+        )
     }
 }
 

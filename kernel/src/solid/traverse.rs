@@ -40,31 +40,7 @@ impl Solid {
 
     /// A box containing the solid (infinite when the solid is unbounded, empty when it is empty).
     pub fn bbox(&self) -> Aabb {
-        self.fold(|s, c: &[Aabb]| match s.kind() {
-            NodeKind::Primitive(p) => p.bbox(),
-            NodeKind::Union => c.iter().fold(Aabb::empty(), |a, b| a.union(b)),
-            NodeKind::Intersection => c.iter().fold(Aabb::infinite(), |a, b| a.intersection(b)),
-            NodeKind::Difference => c.first().copied().unwrap_or(Aabb::empty()),
-            NodeKind::Transform(t) => c
-                .first()
-                .map_or(Aabb::empty(), |b| b.transformed(&t.forward)),
-            // A smooth union adds material within r/4 of the children (for distance fields); r is
-            // a generous margin.
-            NodeKind::SmoothUnion { radius } => c
-                .iter()
-                .fold(Aabb::empty(), |a, b| a.union(b))
-                .expanded(radius.max(0.0)),
-            NodeKind::SmoothIntersection { .. } => {
-                c.iter().fold(Aabb::infinite(), |a, b| a.intersection(b))
-            }
-            NodeKind::SmoothDifference { .. } => c.first().copied().unwrap_or(Aabb::empty()),
-            NodeKind::Offset { distance } => c
-                .first()
-                .map_or(Aabb::empty(), |b| b.expanded(distance.max(0.0))),
-            NodeKind::Shell { thickness } => c
-                .first()
-                .map_or(Aabb::empty(), |b| b.expanded(thickness.max(0.0) * 0.5)),
-        })
+        self.fold(|s, c: &[Aabb]| node_bbox(s.kind(), c))
     }
 
     /// Checks every node's parameters and arity. The error names the node by its path from the
@@ -178,5 +154,34 @@ impl PartialEq for Solid {
             pairs.extend(a.children().iter().zip(b.children()));
         }
         true
+    }
+}
+
+/// The box of a node of kind `kind` whose children have boxes `c` (in the node's coordinates).
+pub(crate) fn node_bbox(kind: &NodeKind, c: &[Aabb]) -> Aabb {
+    match kind {
+        NodeKind::Primitive(p) => p.bbox(),
+        NodeKind::Union => c.iter().fold(Aabb::empty(), |a, b| a.union(b)),
+        NodeKind::Intersection => c.iter().fold(Aabb::infinite(), |a, b| a.intersection(b)),
+        NodeKind::Difference => c.first().copied().unwrap_or(Aabb::empty()),
+        NodeKind::Transform(t) => c
+            .first()
+            .map_or(Aabb::empty(), |b| b.transformed(&t.forward)),
+        // A smooth union adds material within r/4 of the children (for distance fields); r is
+        // a generous margin.
+        NodeKind::SmoothUnion { radius } => c
+            .iter()
+            .fold(Aabb::empty(), |a, b| a.union(b))
+            .expanded(radius.max(0.0)),
+        NodeKind::SmoothIntersection { .. } => {
+            c.iter().fold(Aabb::infinite(), |a, b| a.intersection(b))
+        }
+        NodeKind::SmoothDifference { .. } => c.first().copied().unwrap_or(Aabb::empty()),
+        NodeKind::Offset { distance } => c
+            .first()
+            .map_or(Aabb::empty(), |b| b.expanded(distance.max(0.0))),
+        NodeKind::Shell { thickness } => c
+            .first()
+            .map_or(Aabb::empty(), |b| b.expanded(thickness.max(0.0) * 0.5)),
     }
 }
