@@ -98,7 +98,8 @@ pub(crate) fn assemble(
             || vec![0u32; LOCAL_EDGE_IDS],
             |own, (b, t)| {
                 let o = &bricks[b];
-                for r in 0..o.edge_rows.len() - 1 {
+                let rows = o.edge_rows.len() - 1;
+                for (r, &base) in bases[b].iter().enumerate().take(rows) {
                     let (kl, jl) = (r / o.owned[1], r % o.owned[1]);
                     let start = o.edge_rows[r] as usize;
                     for (p, e) in o.edges[start..o.edge_rows[r + 1] as usize]
@@ -106,7 +107,7 @@ pub(crate) fn assemble(
                         .enumerate()
                     {
                         let id = local_edge((e.0 >> 2) as usize, jl, kl, (e.0 & 3) as usize);
-                        own[id as usize] = bases[b][r] + p as u32;
+                        own[id as usize] = base + p as u32;
                     }
                 }
                 let tris = t
