@@ -6,7 +6,7 @@
 //! only dropped when the other operand wins by more than a margin that covers single-precision
 //! rounding (see [`margin`]), and boxes are only classified inside/outside with the same margin.
 
-use super::{Instr, Program, lower::compact};
+use super::{Instr, Program};
 use crate::primitive::Shape;
 use crate::{Aabb, Interval};
 
@@ -29,6 +29,8 @@ pub struct IntervalScratch {
     scale: f64,
     /// True when the last evaluation found a branch that cannot win.
     prunable: bool,
+    live: Vec<bool>,
+    map: Vec<u32>,
 }
 
 /// The outcome of pruning a program over a box.
@@ -38,8 +40,9 @@ pub enum Pruned {
     Inside,
     /// The whole box is outside the solid.
     Outside,
-    /// The surface may cross the box; the program valid in it (shorter when branches were cut).
-    Surface(Program),
+    /// The surface may cross the box; the shorter program valid in it, or `None` when no branch
+    /// could be cut (the original program applies).
+    Surface(Option<Program>),
 }
 
 /// Safety margin for comparisons between f64 intervals whose values will be evaluated in f32:
@@ -112,36 +115,56 @@ impl Program {
     }
 
     /// The program with the branches that cannot win (per the last [`Program::interval_with`]
-    /// in `s`) removed, or `None` when nothing can be removed.
-    pub fn prune(&self, s: &IntervalScratch) -> Option<Program> {
+    /// in `s`) removed, or `None` when nothing can be removed. One backward pass marks what the
+    /// result needs, following only the operands that can win; one forward pass copies it.
+    pub fn prune(&self, s: &mut IntervalScratch) -> Option<Program> {
         if !s.prunable {
             return None;
         }
-        let mut map = vec![0u32; self.instrs.len()];
-        let mut out: Vec<Instr> = Vec::with_capacity(self.instrs.len());
-        for (i, ins) in self.instrs.iter().enumerate() {
-            let m = |v: u32| map[v as usize];
-            let new = match (*ins, s.choices[i]) {
-                (Instr::Min(a, _) | Instr::Max(a, _) | Instr::SmoothMin(a, _, _), Choice::Left) => {
-                    map[i] = m(a);
-                    continue;
+        let n = self.instrs.len();
+        let winner = |i: usize| match (self.instrs[i], s.choices[i]) {
+            (Instr::Min(a, _) | Instr::Max(a, _) | Instr::SmoothMin(a, _, _), Choice::Left) => {
+                Some(a)
+            }
+            (Instr::Min(_, b) | Instr::Max(_, b) | Instr::SmoothMin(_, b, _), Choice::Right) => {
+                Some(b)
+            }
+            _ => None,
+        };
+        s.live.clear();
+        s.live.resize(n, false);
+        s.live[n - 1] = true;
+        for i in (0..n).rev() {
+            if !s.live[i] {
+                continue;
+            }
+            match winner(i) {
+                Some(w) => s.live[w as usize] = true,
+                None => {
+                    let (ops, k) = super::regalloc::operands(&self.instrs[i]);
+                    for &o in &ops[..k] {
+                        s.live[o as usize] = true;
+                    }
                 }
-                (
-                    Instr::Min(_, b) | Instr::Max(_, b) | Instr::SmoothMin(_, b, _),
-                    Choice::Right,
-                ) => {
-                    map[i] = m(b);
-                    continue;
-                }
-                (other, _) => super::lower::remap(other, m),
-            };
-            out.push(new);
-            map[i] = (out.len() - 1) as u32;
+            }
         }
-        let result = map[self.instrs.len() - 1];
-        let (instrs, _) = compact(&out, result);
+        s.map.clear();
+        s.map.resize(n, 0);
+        let mut out = Vec::with_capacity(s.live.iter().filter(|&&l| l).count());
+        for i in 0..n {
+            if !s.live[i] {
+                continue;
+            }
+            if let Some(w) = winner(i) {
+                s.map[i] = s.map[w as usize];
+                continue;
+            }
+            let map = &s.map;
+            out.push(super::lower::remap(self.instrs[i], |v| map[v as usize]));
+            s.map[i] = (out.len() - 1) as u32;
+        }
         Some(Program::from_parts(
-            instrs,
+            out,
             self.primitives.clone(),
             self.frames.clone(),
         ))
@@ -156,7 +179,7 @@ impl Program {
         } else if iv.lo > m {
             Pruned::Outside
         } else {
-            Pruned::Surface(self.prune(s).unwrap_or_else(|| self.clone()))
+            Pruned::Surface(self.prune(s))
         }
     }
 }

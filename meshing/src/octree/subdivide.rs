@@ -90,8 +90,8 @@ fn split(
 ) -> (Vec<Node>, Option<Node>) {
     let program = match node.program.prune_for_box(&node.bounds(spec), scratch) {
         Pruned::Inside | Pruned::Outside => return (Vec::new(), None),
-        Pruned::Surface(p) if p.len() < node.program.len() => Arc::new(p),
-        Pruned::Surface(_) => node.program.clone(),
+        Pruned::Surface(Some(p)) => Arc::new(p),
+        Pruned::Surface(None) => node.program.clone(),
     };
     if node.size <= brick {
         return (Vec::new(), Some(Node { program, ..node }));
