@@ -270,3 +270,35 @@ fn a_failed_write_keeps_the_previous_file() {
     assert_eq!(o.status.code(), Some(2));
     assert_eq!(std::fs::read(&out).unwrap(), b"previous");
 }
+
+#[test]
+fn one_and_two_threads_write_identical_bytes() {
+    let dir = tempfile::tempdir().unwrap();
+    let tree = fixture("examples/bracket.json");
+    let mut outputs = Vec::new();
+    for threads in ["1", "2"] {
+        let out = dir.path().join(format!("bracket-{threads}.stl"));
+        let o = solidkit(&[
+            "--threads",
+            threads,
+            "mesh",
+            path_str(&tree),
+            "--resolution",
+            "80",
+            "-o",
+            path_str(&out),
+        ]);
+        assert_eq!(
+            o.status.code(),
+            Some(0),
+            "{}",
+            String::from_utf8_lossy(&o.stderr)
+        );
+        outputs.push(std::fs::read(&out).unwrap());
+    }
+    assert!(outputs[0].len() > 84);
+    assert!(
+        outputs[0] == outputs[1],
+        "1 and 2 threads wrote different files"
+    );
+}
