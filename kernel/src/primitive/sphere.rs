@@ -29,12 +29,10 @@ impl Shape for Sphere {
         p.try_normalize().unwrap_or(DVec3::Z)
     }
     fn interval(&self, b: &Aabb) -> Interval {
-        let c = [
-            Interval::new(b.min.x, b.max.x),
-            Interval::new(b.min.y, b.max.y),
-            Interval::new(b.min.z, b.max.z),
-        ];
-        Interval::norm(&c) - Interval::point(self.radius)
+        // Nearest and farthest points of the box from the centre, per axis.
+        let near = b.min.max(-b.max).max(DVec3::ZERO);
+        let far = b.min.abs().max(b.max.abs());
+        Interval::new(near.length() - self.radius, far.length() - self.radius)
     }
     fn bbox(&self) -> Aabb {
         Aabb::centered(DVec3::splat(self.radius))
