@@ -50,11 +50,16 @@ fn smooth_union_of_two_balls_matches_quadrature() {
         let (mut lo, mut hi) = (0.0, 1.0);
         for _ in 0..60 {
             let mid = 0.5 * (lo + hi);
-            if p.value(DVec3::new(x, mid, 0.0)) < 0.0 { lo = mid } else { hi = mid }
+            if p.value(DVec3::new(x, mid, 0.0)) < 0.0 {
+                lo = mid
+            } else {
+                hi = mid
+            }
         }
         exact += PI * lo * lo * dx;
     }
-    let union = 2.0 * 4.0 / 3.0 * PI * 0.125 - 2.0 * PI * (0.1f64.powi(2)) * (3.0 * 0.5 - 0.1) / 3.0;
+    let union =
+        2.0 * 4.0 / 3.0 * PI * 0.125 - 2.0 * PI * (0.1f64.powi(2)) * (3.0 * 0.5 - 0.1) / 3.0;
     assert!(exact > union, "the blend adds material: {exact} vs {union}");
     assert!(rel_err(r.volume, exact) < 0.01, "{} vs {exact}", r.volume);
 }

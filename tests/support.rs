@@ -27,7 +27,8 @@ pub fn load_tree(rel: &str) -> Solid {
 /// `solidkit mesh` does.
 pub fn mesh(solid: &Solid, resolution: usize) -> (IndexedMesh, TopologyReport) {
     let spec = GridSpec::for_bounds(&solid.bbox(), resolution).expect("bounded solid");
-    let (mesh, _) = mesh_sparse(&solid.compile(), spec, &SparseOptions::default()).expect("not cancelled");
+    let (mesh, _) =
+        mesh_sparse(&solid.compile(), spec, &SparseOptions::default()).expect("not cancelled");
     let report = TopologyReport::of(&mesh);
     (mesh, report)
 }

@@ -22,6 +22,12 @@ pub enum Command {
     /// Read a mesh (STL, OBJ, PLY, OFF) and print its topology report; exit 1 unless it is a
     /// closed oriented 2-manifold.
     Check(CheckArgs),
+    /// Benchmark meshing of the standard models and print a table (time, rate, peak memory and
+    /// the check of each mesh); exit 1 if a mesh fails its check.
+    Bench(BenchArgs),
+    /// One benchmark case, run by `bench` in a child process so its peak memory is its own.
+    #[command(hide = true)]
+    BenchCase(BenchCaseArgs),
 }
 
 /// Polygonization method.
@@ -62,6 +68,45 @@ pub struct CheckArgs {
     /// Print the report as JSON.
     #[arg(long)]
     pub json: bool,
+}
+
+/// Arguments of `solidkit bench`.
+#[derive(Debug, clap::Args)]
+pub struct BenchArgs {
+    /// Models, comma-separated: sphere, gyroid-sphere, menger-L, many-N (default: sphere,
+    /// gyroid-sphere, menger-4, many-8456).
+    #[arg(long, value_delimiter = ',')]
+    pub model: Vec<String>,
+    /// Resolutions, comma-separated, for every model (cells along the longest side of the
+    /// model's domain; default: each model's own list).
+    #[arg(long, value_delimiter = ',')]
+    pub resolution: Vec<usize>,
+    /// Runs per case; the table shows the median, minimum and maximum time.
+    #[arg(long, default_value_t = 5, value_parser = clap::value_parser!(u32).range(1..))]
+    pub repeat: u32,
+    /// Measure the raw single-thread evaluation rates (points/s, boxes/s) instead of meshing.
+    #[arg(long)]
+    pub raw: bool,
+    /// Run the cases in this process (faster to start; no peak memory).
+    #[arg(long)]
+    pub in_process: bool,
+    /// Print JSON instead of a table.
+    #[arg(long)]
+    pub json: bool,
+}
+
+/// Arguments of the hidden `solidkit bench-case` (one case; prints one JSON line).
+#[derive(Debug, clap::Args)]
+pub struct BenchCaseArgs {
+    /// The model's name.
+    #[arg(long)]
+    pub model: String,
+    /// Cells along the longest side of the model's domain.
+    #[arg(long)]
+    pub resolution: usize,
+    /// Runs.
+    #[arg(long, default_value_t = 5, value_parser = clap::value_parser!(u32).range(1..))]
+    pub repeat: u32,
 }
 
 fn parse_bounds(s: &str) -> Result<[f64; 6], String> {

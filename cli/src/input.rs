@@ -2,6 +2,7 @@
 
 use anyhow::{Context, Result, bail};
 use solidkit_kernel::{Solid, json};
+use solidkit_meshing::io::FileMeshResolver;
 use std::path::Path;
 
 /// Reads and validates the solid in `path`.
@@ -24,7 +25,9 @@ pub fn load_solid(path: &Path) -> Result<Solid> {
             e.utf8_error().valid_up_to()
         ),
     };
-    let solid = json::from_str(&text).map_err(|e| anyhow::anyhow!("{name}:{e}"))?;
+    // `mesh` nodes name their files relative to the tree file's folder.
+    let resolver = FileMeshResolver::for_tree_file(path);
+    let solid = json::from_str_with(&text, &resolver).map_err(|e| anyhow::anyhow!("{name}:{e}"))?;
     solid
         .validate()
         .map_err(|e| anyhow::anyhow!("{name}: {e}"))?;

@@ -10,15 +10,21 @@
 #![warn(missing_docs)]
 
 mod aabb;
+pub mod curve;
 mod error;
 mod field;
 mod interval;
 pub mod json;
 mod mesh;
+pub mod models;
+pub mod patch;
+pub mod polyhedra;
 pub mod primitive;
+pub mod profile;
 pub mod program;
 mod simd;
 mod solid;
+pub mod tessellate;
 mod transform;
 
 pub use aabb::Aabb;

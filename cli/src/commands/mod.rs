@@ -1,5 +1,6 @@
 //! The subcommands, one file each.
 
+mod bench;
 mod check;
 mod mesh;
 
@@ -11,5 +12,7 @@ pub fn run(command: Command) -> Result<u8> {
     match command {
         Command::Mesh(a) => mesh::run(&a),
         Command::Check(a) => check::run(&a),
+        Command::Bench(a) => bench::run(&a),
+        Command::BenchCase(a) => bench::run_case(&a),
     }
 }

@@ -13,13 +13,19 @@
 //! minor_radius), `plane` (normal, offset; inside is `n̂ · p ≤ offset`), `union` / `intersection` /
 //! `difference` (children), `translate` (offset), `rotate` (axis, degrees), `scale` (factor: number
 //! or [x, y, z]), `mirror` (normal), `affine` (matrix: 3 rows of 4); transforms take one `child`.
+//! Polyhedra: `platonic` (solid: tetrahedron | cube | octahedron | dodecahedron | icosahedron;
+//! circumradius or edge), `polyhedron` (vertices: [[x, y, z], …], faces: [[i, j, k, …], …],
+//! counter-clockwise from outside), `mesh` (path of an STL/OBJ/PLY/OFF file, loaded through a
+//! [`MeshResolver`]: see [`from_str_with`]), `prism` (polygon: [[x, y], …], optional holes,
+//! direction).
 //! Any node may carry a `comment` string.
 
 mod document;
 mod read;
 mod write;
 
-pub use read::from_str;
+pub use crate::primitive::{MeshResolver, NoMeshResolver};
+pub use read::{from_str, from_str_with};
 pub use write::to_string;
 
 /// The value of the envelope's `format` key.

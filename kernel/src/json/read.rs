@@ -3,11 +3,20 @@
 
 use super::document::{Document, Value, line_column, parse};
 use super::{FORMAT, VERSION};
-use crate::primitive::{Cone, Cuboid, Cylinder, HalfSpace, Primitive, Shape, Sphere, Torus};
+use crate::primitive::{
+    Cone, Cuboid, Cylinder, HalfSpace, MeshResolver, NoMeshResolver, Primitive, Shape, Sphere,
+    Torus,
+};
 use crate::solid::{NodeKind, Solid};
 use crate::transform::{Transform, TransformSpec};
 use crate::{KernelError, solid};
 use glam::DVec3;
+
+mod blob;
+mod heightfield;
+mod polyhedra;
+mod quadric;
+mod sweep;
 
 /// A problem at a byte offset, with the message already carrying the JSON path.
 struct Located {
@@ -18,12 +27,22 @@ struct Located {
 type R<T> = Result<T, Located>;
 
 /// Reads a solid from JSON text: either the versioned envelope
-/// `{"format": "solidkit-tree", "version": 1, "root": NODE}` or a bare node.
+/// `{"format": "solidkit-tree", "version": 1, "root": NODE}` or a bare node. A `mesh` node is an
+/// error here (mesh files need a resolver: see [`from_str_with`]).
 pub fn from_str(text: &str) -> Result<Solid, KernelError> {
+    from_str_with(text, &NoMeshResolver)
+}
+
+/// Reads a solid from JSON text like [`from_str`], loading the files of `mesh` nodes with
+/// `resolver`.
+pub fn from_str_with(text: &str, resolver: &dyn MeshResolver) -> Result<Solid, KernelError> {
     let doc = parse(text).map_err(|e| to_error(text, e.offset, e.message))?;
-    Reader { doc: &doc }
-        .read()
-        .map_err(|e| to_error(text, e.offset, e.message))
+    Reader {
+        doc: &doc,
+        resolver,
+    }
+    .read()
+    .map_err(|e| to_error(text, e.offset, e.message))
 }
 
 fn to_error(text: &str, offset: usize, message: String) -> KernelError {
@@ -37,6 +56,7 @@ fn to_error(text: &str, offset: usize, message: String) -> KernelError {
 
 struct Reader<'a> {
     doc: &'a Document,
+    resolver: &'a dyn MeshResolver,
 }
 
 /// One node being built: its object, its path segment, and the JSON indices of its children.
@@ -129,7 +149,11 @@ impl<'a> Reader<'a> {
         };
         let ty = self.node_type(index, entries, &p)?;
         let children = match ty {
-            "union" | "intersection" | "difference" | "smooth_union" | "smooth_intersection"
+            "union"
+            | "intersection"
+            | "difference"
+            | "smooth_union"
+            | "smooth_intersection"
             | "smooth_difference" => {
                 let list = self.required(index, entries, "children", &p)?;
                 let Value::Array(items) = &self.doc.values[list as usize] else {
@@ -220,7 +244,11 @@ impl<'a> Reader<'a> {
             "smooth_union" | "smooth_intersection" | "smooth_difference" => {
                 let radius = params.positive("radius")?;
                 if ty == "smooth_difference" && children.is_empty() {
-                    return Err(self.located(f.index, &params.path(), "smooth_difference needs at least one child"));
+                    return Err(self.located(
+                        f.index,
+                        &params.path(),
+                        "smooth_difference needs at least one child",
+                    ));
                 }
                 let kind = match ty {
                     "smooth_union" => NodeKind::SmoothUnion { radius },
@@ -229,8 +257,18 @@ impl<'a> Reader<'a> {
                 };
                 (kind, &["radius", "children"])
             }
-            "offset" => (NodeKind::Offset { distance: params.number("distance")? }, &["distance", "child"]),
-            "shell" => (NodeKind::Shell { thickness: params.positive("thickness")? }, &["thickness", "child"]),
+            "offset" => (
+                NodeKind::Offset {
+                    distance: params.number("distance")?,
+                },
+                &["distance", "child"],
+            ),
+            "shell" => (
+                NodeKind::Shell {
+                    thickness: params.positive("thickness")?,
+                },
+                &["thickness", "child"],
+            ),
             "translate" => (
                 params.transform(TransformSpec::Translate(params.vec3("offset")?))?,
                 &["offset", "child"],
@@ -324,7 +362,11 @@ impl Params<'_, '_> {
     fn positive(&self, key: &str) -> R<f64> {
         let at = self.at(key)?;
         let x = self.number_at(at, key)?;
-        if x > 0.0 { Ok(x) } else { Err(self.fail(at, key, "expected a positive number")) }
+        if x > 0.0 {
+            Ok(x)
+        } else {
+            Err(self.fail(at, key, "expected a positive number"))
+        }
     }
 
     fn number(&self, key: &str) -> R<f64> {
@@ -437,9 +479,26 @@ impl Params<'_, '_> {
                 &["normal", "offset"],
             ),
             "gyroid" => (
-                Primitive::Gyroid(crate::primitive::Gyroid { thickness: self.number("thickness")? }),
+                Primitive::Gyroid(crate::primitive::Gyroid {
+                    thickness: self.number("thickness")?,
+                }),
                 &["thickness"],
             ),
+            "ellipsoid"
+            | "quadric"
+            | "elliptic_cylinder"
+            | "elliptic_cone"
+            | "elliptic_paraboloid"
+            | "hyperbolic_paraboloid"
+            | "hyperboloid_one_sheet"
+            | "hyperboloid_two_sheets" => self.quadric_family(ty)?,
+            "blob" => self.blob()?,
+            "heightfield" => self.heightfield()?,
+            "extrude" | "revolve" | "sweep" | "loft" | "ruled" => self.sweep_family(ty)?,
+            "platonic" => self.platonic()?,
+            "polyhedron" => self.polyhedron()?,
+            "mesh" => self.mesh_file()?,
+            "prism" => self.prism()?,
             other => {
                 let t = self.at("type")?;
                 return Err(self.fail(t, "type", format!("unknown node type \"{other}\"")));

@@ -85,3 +85,28 @@ fn errors_name_line_column_and_path() {
     assert_eq!(line, 2);
     assert!(msg.contains("quoted object key"), "{msg}");
 }
+
+#[test]
+fn blends_offsets_and_shells_round_trip_and_validate() {
+    let s = Solid::smooth_union_all([Solid::sphere(1.0), Solid::cube(1.0)], 0.25)
+        .offset(-0.05)
+        .shell(0.1)
+        .union(&Solid::smooth_difference_all(
+            Solid::cube(2.0),
+            [Solid::sphere(1.2)],
+            0.1,
+        ))
+        .union(&Solid::smooth_intersection_all(
+            [Solid::cube(2.0), Solid::sphere(1.2)],
+            0.1,
+        ));
+    assert!(json::from_str(&json::to_string(&s)).unwrap() == s);
+    let (_, _, msg) = error(r#"{"type": "smooth_union", "radius": 0, "children": []}"#);
+    assert_eq!(msg, "radius: expected a positive number");
+    let (_, _, msg) = error(
+        r#"{"type": "shell", "thickness": 0.1, "child": {"type": "sphere", "radius": 1}, "children": []}"#,
+    );
+    assert!(msg.starts_with("children: unknown key"), "{msg}");
+    assert!(Solid::sphere(1.0).shell(-1.0).validate().is_err());
+    assert!(Solid::sphere(1.0).offset(f64::NAN).validate().is_err());
+}

@@ -10,6 +10,12 @@ use crate::transform::TransformSpec;
 use glam::DVec3;
 use std::fmt::Write;
 
+mod blob;
+mod heightfield;
+mod polyhedra;
+mod quadric;
+mod sweep;
+
 const MAX_INDENT: usize = 16;
 
 /// Writes the versioned envelope around the tree.
@@ -68,6 +74,17 @@ fn members(kind: &NodeKind) -> String {
                 num(h.offset)
             ),
             Primitive::Gyroid(g) => format!("\"thickness\": {}", num(g.thickness)),
+            Primitive::Ellipsoid(e) => format!("\"radii\": {}", vec3(e.radii)),
+            Primitive::Quadric(q) => quadric::members(q),
+            Primitive::Blob(b) => blob::members(b),
+            Primitive::HeightField(h) => heightfield::members(h),
+            Primitive::Platonic(p) => polyhedra::platonic(p),
+            Primitive::Mesh(m) => polyhedra::mesh(m),
+            Primitive::Extrude(e) => sweep::extrude(e),
+            Primitive::Revolve(r) => sweep::revolve(r),
+            Primitive::Sweep(s) => sweep::sweep(s),
+            Primitive::Loft(l) => sweep::loft(l),
+            Primitive::Ruled(r) => sweep::ruled(r),
         },
         NodeKind::Union | NodeKind::Intersection | NodeKind::Difference => String::new(),
         NodeKind::SmoothUnion { radius }

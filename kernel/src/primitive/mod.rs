@@ -4,24 +4,37 @@
 //! Every primitive here is an exact signed distance (Lipschitz constant 1), so a box's interval
 //! can always fall back to `f(centre) ± half-diagonal`.
 
+pub mod blob;
 mod cone;
 mod cuboid;
 mod cylinder;
 mod gyroid;
+pub mod heightfield;
 mod plane;
+mod polyhedron;
+pub mod quadric;
 mod sphere;
+pub mod sweep;
 mod torus;
 
+pub use blob::Blob;
 pub use cone::Cone;
 pub use cuboid::Cuboid;
 pub use cylinder::Cylinder;
 pub use gyroid::{Gyroid, cos_f32, cos_interval, sin_f32, sin_interval, sincos_f32};
+pub use heightfield::HeightField;
 pub use plane::HalfSpace;
+pub use polyhedron::{
+    MeshResolver, MeshSolid, MeshSolidError, MeshSource, NoMeshResolver, Platonic,
+};
+pub use quadric::{Ellipsoid, Quadric};
 pub use sphere::Sphere;
+pub use sweep::{Extrude, Loft, Revolve, Ruled, Sweep};
 pub use torus::Torus;
 
 use crate::{Aabb, Interval};
 use glam::DVec3;
+use std::sync::Arc;
 
 /// The operations every primitive provides.
 pub trait Shape {
@@ -146,6 +159,28 @@ pub enum Primitive {
     HalfSpace(HalfSpace),
     /// A gyroid sheet (triply periodic, unbounded).
     Gyroid(Gyroid),
+    /// A Platonic solid centred at the origin (exact face-plane field).
+    Platonic(Platonic),
+    /// A solid bounded by a triangle mesh (inline polyhedron, mesh file or prism; exact distance).
+    Mesh(MeshSolid),
+    /// An axis-aligned ellipsoid.
+    Ellipsoid(Ellipsoid),
+    /// A quadric solid `{Q ≤ 0}`, bounded by a box where unbounded.
+    Quadric(Arc<Quadric>),
+    /// A blobby object (metaballs).
+    Blob(Arc<Blob>),
+    /// A height-field solid between a base plane and `z = h(x, y)`.
+    HeightField(Arc<HeightField>),
+    /// A profile extruded along z, optionally twisted and scaled.
+    Extrude(Arc<Extrude>),
+    /// A profile revolved about the z axis (full or partial turn).
+    Revolve(Arc<Revolve>),
+    /// A profile swept along a 3D curve with rotation-minimising frames.
+    Sweep(Arc<Sweep>),
+    /// A loft between two profiles at two heights.
+    Loft(Arc<Loft>),
+    /// The solid bounded by the ruled surface between two closed plane curves.
+    Ruled(Arc<Ruled>),
 }
 
 macro_rules! dispatch {
@@ -158,6 +193,17 @@ macro_rules! dispatch {
             Primitive::Torus($s) => $e,
             Primitive::HalfSpace($s) => $e,
             Primitive::Gyroid($s) => $e,
+            Primitive::Platonic($s) => $e,
+            Primitive::Mesh($s) => $e,
+            Primitive::Ellipsoid($s) => $e,
+            Primitive::Quadric($s) => $e,
+            Primitive::Blob($s) => $e,
+            Primitive::HeightField($s) => $e,
+            Primitive::Extrude($s) => $e,
+            Primitive::Revolve($s) => $e,
+            Primitive::Sweep($s) => $e,
+            Primitive::Loft($s) => $e,
+            Primitive::Ruled($s) => $e,
         }
     };
 }
@@ -173,6 +219,17 @@ impl Primitive {
             Primitive::Torus(_) => "torus",
             Primitive::HalfSpace(_) => "plane",
             Primitive::Gyroid(_) => "gyroid",
+            Primitive::Platonic(_) => "platonic",
+            Primitive::Mesh(m) => m.name(),
+            Primitive::Ellipsoid(_) => "ellipsoid",
+            Primitive::Quadric(q) => q.name(),
+            Primitive::Blob(_) => "blob",
+            Primitive::HeightField(_) => "heightfield",
+            Primitive::Extrude(_) => "extrude",
+            Primitive::Revolve(_) => "revolve",
+            Primitive::Sweep(_) => "sweep",
+            Primitive::Loft(_) => "loft",
+            Primitive::Ruled(_) => "ruled",
         }
     }
 }

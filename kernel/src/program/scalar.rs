@@ -68,7 +68,10 @@ impl Program {
                     let h = (rad - (x.0 - y.0).abs()).max(0.0) / rad;
                     let w = 0.5 * h;
                     let (lo, hi) = if x.0 <= y.0 { (x, y) } else { (y, x) };
-                    (super::smooth_min(x.0, y.0, rad), lo.1 * (1.0 - w) + hi.1 * w)
+                    (
+                        super::smooth_min(x.0, y.0, rad),
+                        lo.1 * (1.0 - w) + hi.1 * w,
+                    )
                 }
                 Instr::Abs(a) => {
                     let x = slots[r(a)];

@@ -135,16 +135,26 @@ impl Solid {
 impl Solid {
     /// Union of `solids` blended with fillets of `radius`.
     pub fn smooth_union_all(solids: impl IntoIterator<Item = Solid>, radius: f64) -> Solid {
-        Solid::from_parts(NodeKind::SmoothUnion { radius }, solids.into_iter().collect())
+        Solid::from_parts(
+            NodeKind::SmoothUnion { radius },
+            solids.into_iter().collect(),
+        )
     }
 
     /// Intersection of `solids` with creases rounded by `radius`.
     pub fn smooth_intersection_all(solids: impl IntoIterator<Item = Solid>, radius: f64) -> Solid {
-        Solid::from_parts(NodeKind::SmoothIntersection { radius }, solids.into_iter().collect())
+        Solid::from_parts(
+            NodeKind::SmoothIntersection { radius },
+            solids.into_iter().collect(),
+        )
     }
 
     /// `base` minus `cutters` with creases rounded by `radius`.
-    pub fn smooth_difference_all(base: Solid, cutters: impl IntoIterator<Item = Solid>, radius: f64) -> Solid {
+    pub fn smooth_difference_all(
+        base: Solid,
+        cutters: impl IntoIterator<Item = Solid>,
+        radius: f64,
+    ) -> Solid {
         let mut children = vec![base];
         children.extend(cutters);
         Solid::from_parts(NodeKind::SmoothDifference { radius }, children)

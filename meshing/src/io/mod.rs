@@ -20,6 +20,7 @@ mod off;
 mod ply;
 mod ply_header;
 mod polygon;
+mod resolver;
 mod stl;
 mod text;
 mod weld;
@@ -35,6 +36,7 @@ use crate::IndexedMesh;
 pub use atomic::write_atomic;
 pub use error::{Location, MeshIoError};
 pub use polygon::{PolygonError, newell_normal, triangulate_polygon};
+pub use resolver::FileMeshResolver;
 
 /// A mesh file format.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]

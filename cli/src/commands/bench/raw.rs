@@ -1,0 +1,162 @@
+//! Raw single-thread evaluation rates, no pruning: `Program::eval_many` over a lattice of points
+//! (points/s) and `Program::interval_with` over octree-like boxes (boxes/s). Also the full
+//! `many-8456` program, whose rate tells what dense evaluation of every sample would cost.
+
+use super::case::median;
+use super::table::{Table, si};
+use anyhow::Result;
+use serde::Serialize;
+use solidkit_kernel::models::Model;
+use solidkit_kernel::models::workload::{lattice_points, octree_boxes};
+use solidkit_kernel::program::{BatchScratch, IntervalScratch};
+use std::hint::black_box;
+use std::time::Instant;
+
+/// How much work each raw measurement does.
+#[derive(Debug, Clone, Copy)]
+pub struct RawSizes {
+    /// Points for `sphere` and `gyroid-sphere`.
+    pub points: usize,
+    /// Points for `many-8456` (its full program is thousands of times longer).
+    pub many_points: usize,
+    /// Boxes for the interval rate.
+    pub boxes: usize,
+}
+
+impl Default for RawSizes {
+    fn default() -> Self {
+        Self {
+            points: 1 << 22,
+            many_points: 1 << 14,
+            boxes: 1 << 20,
+        }
+    }
+}
+
+/// One raw measurement.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct RawRow {
+    /// `eval` or `interval`.
+    pub kind: &'static str,
+    /// Model name.
+    pub model: String,
+    /// Instructions of the program.
+    pub program_length: usize,
+    /// Points or boxes per run.
+    pub count: usize,
+    /// `points` or `boxes`.
+    pub unit: &'static str,
+    /// Time of each run, seconds.
+    pub times_s: Vec<f64>,
+    /// `count` / median time.
+    pub rate_per_s: f64,
+}
+
+fn timed(repeat: u32, mut f: impl FnMut()) -> Vec<f64> {
+    (0..repeat.max(1))
+        .map(|_| {
+            let t = Instant::now();
+            f();
+            t.elapsed().as_secs_f64()
+        })
+        .collect()
+}
+
+fn row(kind: &'static str, model: &Model, len: usize, count: usize, times: Vec<f64>) -> RawRow {
+    let mut sorted = times.clone();
+    sorted.sort_by(f64::total_cmp);
+    RawRow {
+        kind,
+        model: model.name.clone(),
+        program_length: len,
+        count,
+        unit: if kind == "eval" { "points" } else { "boxes" },
+        rate_per_s: count as f64 / median(&sorted),
+        times_s: times,
+    }
+}
+
+/// Measures the raw rates on this thread, `repeat` runs each.
+pub fn run(sizes: &RawSizes, repeat: u32) -> Result<Vec<RawRow>> {
+    let mut rows = Vec::new();
+    for (name, count) in [
+        ("sphere", sizes.points),
+        ("gyroid-sphere", sizes.points),
+        ("many-8456", sizes.many_points),
+    ] {
+        let model = Model::by_name(name)?;
+        let program = model.solid.compile();
+        let pts = lattice_points(&model.domain, count);
+        let mut out = vec![0.0f32; count];
+        let mut scratch = BatchScratch::new(&program);
+        let times = timed(repeat, || {
+            program.eval_many(&pts.x, &pts.y, &pts.z, &mut out, &mut scratch);
+            black_box(&mut out);
+        });
+        rows.push(row("eval", &model, program.len(), count, times));
+    }
+    let model = Model::by_name("sphere")?;
+    let program = model.solid.compile();
+    let boxes = octree_boxes(&model.domain, sizes.boxes, 1);
+    let mut scratch = IntervalScratch::default();
+    let times = timed(repeat, || {
+        for b in &boxes {
+            black_box(program.interval_with(black_box(b), &mut scratch));
+        }
+    });
+    rows.push(row("interval", &model, program.len(), sizes.boxes, times));
+    Ok(rows)
+}
+
+/// The raw rates as a table.
+pub fn table(rows: &[RawRow]) -> Table {
+    let mut t = Table::new(&[
+        "measure",
+        "model",
+        "instructions",
+        "count",
+        "median s",
+        "rate",
+    ]);
+    for r in rows {
+        let mut sorted = r.times_s.clone();
+        sorted.sort_by(f64::total_cmp);
+        t.rows.push(vec![
+            r.kind.to_string(),
+            r.model.clone(),
+            r.program_length.to_string(),
+            r.count.to_string(),
+            format!("{:.4}", median(&sorted)),
+            format!("{} {}/s", si(r.rate_per_s), r.unit),
+        ]);
+    }
+    t
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn tiny_raw_run_has_every_row() {
+        let sizes = RawSizes {
+            points: 1000,
+            many_points: 10,
+            boxes: 100,
+        };
+        let rows = run(&sizes, 1).expect("runs");
+        let kinds: Vec<(&str, &str)> = rows.iter().map(|r| (r.kind, r.model.as_str())).collect();
+        assert_eq!(
+            kinds,
+            [
+                ("eval", "sphere"),
+                ("eval", "gyroid-sphere"),
+                ("eval", "many-8456"),
+                ("interval", "sphere")
+            ]
+        );
+        let text = table(&rows).render();
+        assert_eq!(text.lines().count(), 1 + rows.len());
+        assert!(text.lines().skip(1).all(|l| l.ends_with("/s")));
+    }
+}

@@ -1,0 +1,372 @@
+//! Reading the sweep family: `extrude` (profile, height, optional twist in degrees and scale),
+//! `revolve` (profile, optional angle in degrees, default 360), `sweep` (profile, path), `loft`
+//! (bottom and top profiles, height) and `ruled` (bottom and top curves).
+//!
+//! Profiles are objects: `{"type": "circle", "radius": r, "center": [x, y]}`,
+//! `{"type": "rectangle", "size": [w, h] or s, "center": [x, y]}` (centres optional, default the
+//! origin), `{"type": "polygon", "points": [[x, y], …], "holes": [[[x, y], …], …]}` (holes
+//! optional; inside by the even-odd rule). Curves are objects with points as [x, y, z] (or [x, y]
+//! for z = 0): `bezier` (points), `hermite` (points: [P₀, P₁], tangents: [M₀, M₁]), `bspline`
+//! (degree, points, knots; knots omitted: clamped uniform), `nurbs` (degree, points, weights,
+//! knots; weights omitted: all 1; knots omitted: clamped uniform), `interpolating` (points,
+//! closed: false by default).
+
+use super::super::document::Value;
+use super::{Params, R};
+use crate::curve::{BSpline, Bezier, Curve, CurveError, Hermite, Interpolating, Nurbs};
+use crate::primitive::sweep::SweepError;
+use crate::primitive::{Extrude, Loft, Primitive, Revolve, Ruled, Sweep};
+use crate::profile::{Circle, Profile, ProfileError, Rectangle};
+use glam::{DVec2, DVec3};
+use std::sync::Arc;
+
+/// A nested object: its arena index, its entries and its key path from the node (`profile`,
+/// `path`, …).
+struct Nested<'e> {
+    index: u32,
+    entries: &'e [(String, u32)],
+    key: String,
+}
+
+impl Params<'_, '_> {
+    /// The primitive of a sweep-family node type.
+    pub(super) fn sweep_family(&self, ty: &str) -> R<(Primitive, &'static [&'static str])> {
+        let located = |e: SweepError| self.sweep_error(e);
+        Ok(match ty {
+            "extrude" => {
+                let profile = self.sweep_profile("profile")?;
+                let twist = self.sweep_optional("twist", 0.0)?;
+                let scale = self.sweep_optional("scale", 1.0)?;
+                let e =
+                    Extrude::new(profile, self.number("height")?, twist, scale).map_err(located)?;
+                (
+                    Primitive::Extrude(Arc::new(e)),
+                    &["profile", "height", "twist", "scale"],
+                )
+            }
+            "revolve" => {
+                let profile = self.sweep_profile("profile")?;
+                let angle = self.sweep_optional("angle", 360.0)?;
+                let r = Revolve::new(profile, angle).map_err(located)?;
+                (Primitive::Revolve(Arc::new(r)), &["profile", "angle"])
+            }
+            "sweep" => {
+                let s = Sweep::new(self.sweep_profile("profile")?, self.sweep_curve("path")?)
+                    .map_err(located)?;
+                (Primitive::Sweep(Arc::new(s)), &["profile", "path"])
+            }
+            "loft" => {
+                let l = Loft::new(
+                    self.sweep_profile("bottom")?,
+                    self.sweep_profile("top")?,
+                    self.number("height")?,
+                )
+                .map_err(located)?;
+                (Primitive::Loft(Arc::new(l)), &["bottom", "top", "height"])
+            }
+            _ => {
+                let r = Ruled::new(self.sweep_curve("bottom")?, self.sweep_curve("top")?)
+                    .map_err(located)?;
+                (Primitive::Ruled(Arc::new(r)), &["bottom", "top"])
+            }
+        })
+    }
+
+    /// A located error for a sweep error, at the nested value it names when there is one.
+    fn sweep_error(&self, e: SweepError) -> super::Located {
+        let key = e.parameter();
+        let outer = self.at(key).unwrap_or(self.index);
+        let inner = |name: &str| match &self.reader.doc.values[outer as usize] {
+            Value::Object(entries) => super::find(entries, name).unwrap_or(outer),
+            _ => outer,
+        };
+        let (at, message) = match &e {
+            SweepError::Profile { error, .. } => (inner(error.parameter()), error.to_string()),
+            SweepError::Curve { error, .. } => (inner(error.parameter()), error.to_string()),
+            SweepError::Invalid { problem, .. } => (outer, problem.to_string()),
+        };
+        self.fail(at, key, message)
+    }
+
+    /// A number that may be absent (then `default`).
+    fn sweep_optional(&self, key: &str, default: f64) -> R<f64> {
+        match super::find(self.entries, key) {
+            Some(i) => self.number_at(i, key),
+            None => Ok(default),
+        }
+    }
+
+    /// The object under the node's `key`.
+    fn sweep_nested(&self, key: &str) -> R<Nested<'_>> {
+        let index = self.at(key)?;
+        match &self.reader.doc.values[index as usize] {
+            Value::Object(entries) => Ok(Nested {
+                index,
+                entries,
+                key: key.to_string(),
+            }),
+            v => Err(self.fail(
+                index,
+                key,
+                format!("expected an object, found {}", v.type_name()),
+            )),
+        }
+    }
+
+    /// The `type` string of a nested object.
+    fn sweep_nested_type(&self, n: &Nested<'_>) -> R<&str> {
+        let t = self.sweep_member(n, "type")?;
+        match &self.reader.doc.values[t as usize] {
+            Value::String(s) => Ok(s.as_str()),
+            v => Err(self.fail(
+                t,
+                &format!("{}.type", n.key),
+                format!("expected a string, found {}", v.type_name()),
+            )),
+        }
+    }
+
+    /// The index of a required member of a nested object.
+    fn sweep_member(&self, n: &Nested<'_>, key: &str) -> R<u32> {
+        super::find(n.entries, key)
+            .ok_or_else(|| self.fail(n.index, &n.key, format!("missing key \"{key}\"")))
+    }
+
+    /// Rejects members of a nested object outside `allowed` (besides `type` and `comment`).
+    fn sweep_nested_keys(&self, n: &Nested<'_>, allowed: &[&str]) -> R<()> {
+        for (k, i) in n.entries {
+            if k != "type" && k != "comment" && !allowed.contains(&k.as_str()) {
+                return Err(self.fail(
+                    *i,
+                    &format!("{}.{k}", n.key),
+                    format!(
+                        "unknown key \"{k}\" (expected one of: {})",
+                        allowed.join(", ")
+                    ),
+                ));
+            }
+        }
+        Ok(())
+    }
+
+    /// The items of an array.
+    fn sweep_items(&self, index: u32, key: &str) -> R<&[u32]> {
+        match &self.reader.doc.values[index as usize] {
+            Value::Array(items) => Ok(items),
+            v => Err(self.fail(
+                index,
+                key,
+                format!("expected an array, found {}", v.type_name()),
+            )),
+        }
+    }
+
+    /// A point `[x, y]`.
+    fn sweep_point2(&self, index: u32, key: &str) -> R<DVec2> {
+        Ok(DVec2::from_array(self.numbers::<2>(index, key)?))
+    }
+
+    /// A point `[x, y, z]`, or `[x, y]` with z = 0.
+    fn sweep_point3(&self, index: u32, key: &str) -> R<DVec3> {
+        let n = self.sweep_items(index, key)?.len();
+        if n == 2 {
+            Ok(self.sweep_point2(index, key)?.extend(0.0))
+        } else {
+            Ok(DVec3::from_array(self.numbers::<3>(index, key)?))
+        }
+    }
+
+    /// An array of 2D points.
+    fn sweep_points2(&self, index: u32, key: &str) -> R<Vec<DVec2>> {
+        let items = self.sweep_items(index, key)?;
+        items
+            .iter()
+            .enumerate()
+            .map(|(k, &i)| self.sweep_point2(i, &format!("{key}[{k}]")))
+            .collect()
+    }
+
+    /// An array of 3D points.
+    fn sweep_points3(&self, index: u32, key: &str) -> R<Vec<DVec3>> {
+        let items = self.sweep_items(index, key)?;
+        items
+            .iter()
+            .enumerate()
+            .map(|(k, &i)| self.sweep_point3(i, &format!("{key}[{k}]")))
+            .collect()
+    }
+
+    /// An array of numbers.
+    fn sweep_numbers(&self, index: u32, key: &str) -> R<Vec<f64>> {
+        let items = self.sweep_items(index, key)?;
+        items
+            .iter()
+            .enumerate()
+            .map(|(k, &i)| self.number_at(i, &format!("{key}[{k}]")))
+            .collect()
+    }
+
+    /// The profile object under `key`.
+    fn sweep_profile(&self, key: &str) -> R<Profile> {
+        let n = self.sweep_nested(key)?;
+        let ty = self.sweep_nested_type(&n)?;
+        let k = |m: &str| format!("{key}.{m}");
+        let center = |n: &Nested<'_>| -> R<DVec2> {
+            match super::find(n.entries, "center") {
+                Some(i) => self.sweep_point2(i, &k("center")),
+                None => Ok(DVec2::ZERO),
+            }
+        };
+        let profile = match ty {
+            "circle" => {
+                self.sweep_nested_keys(&n, &["radius", "center"])?;
+                let radius = self.number_at(self.sweep_member(&n, "radius")?, &k("radius"))?;
+                Profile::Circle(Circle {
+                    center: center(&n)?,
+                    radius,
+                })
+            }
+            "rectangle" => {
+                self.sweep_nested_keys(&n, &["size", "center"])?;
+                let i = self.sweep_member(&n, "size")?;
+                let size = match self.reader.doc.values[i as usize] {
+                    Value::Number(s) => DVec2::splat(s),
+                    _ => self.sweep_point2(i, &k("size"))?,
+                };
+                Profile::Rectangle(Rectangle {
+                    center: center(&n)?,
+                    size,
+                })
+            }
+            "polygon" => {
+                self.sweep_nested_keys(&n, &["points", "holes"])?;
+                let points = self.sweep_points2(self.sweep_member(&n, "points")?, &k("points"))?;
+                let holes = match super::find(n.entries, "holes") {
+                    Some(i) => self
+                        .sweep_items(i, &k("holes"))?
+                        .iter()
+                        .enumerate()
+                        .map(|(h, &j)| self.sweep_points2(j, &k(&format!("holes[{h}]"))))
+                        .collect::<R<Vec<_>>>()?,
+                    None => Vec::new(),
+                };
+                return Profile::polygon(points, holes)
+                    .map_err(|e| self.sweep_profile_error(&n, e));
+            }
+            other => {
+                let t = self.sweep_member(&n, "type")?;
+                return Err(self.fail(
+                    t,
+                    &k("type"),
+                    format!(
+                        "unknown profile type \"{other}\" (expected circle, rectangle or polygon)"
+                    ),
+                ));
+            }
+        };
+        profile
+            .checked()
+            .map_err(|e| self.sweep_profile_error(&n, e))
+    }
+
+    fn sweep_profile_error(&self, n: &Nested<'_>, e: ProfileError) -> super::Located {
+        let p = e.parameter();
+        let at = super::find(n.entries, p).unwrap_or(n.index);
+        self.fail(at, &n.key, e)
+    }
+
+    fn sweep_curve_error(&self, n: &Nested<'_>, e: CurveError) -> super::Located {
+        let p = e.parameter();
+        let at = super::find(n.entries, p).unwrap_or(n.index);
+        self.fail(at, &n.key, e)
+    }
+
+    /// The curve object under `key`.
+    fn sweep_curve(&self, key: &str) -> R<Curve> {
+        let n = self.sweep_nested(key)?;
+        let ty = self.sweep_nested_type(&n)?;
+        let k = |m: &str| format!("{key}.{m}");
+        let points = |name: &str| -> R<Vec<DVec3>> {
+            self.sweep_points3(self.sweep_member(&n, name)?, &k(name))
+        };
+        let optional_list = |name: &str| -> R<Option<Vec<f64>>> {
+            match super::find(n.entries, name) {
+                Some(i) => Ok(Some(self.sweep_numbers(i, &k(name))?)),
+                None => Ok(None),
+            }
+        };
+        let degree = || -> R<usize> {
+            let i = self.sweep_member(&n, "degree")?;
+            let d = self.number_at(i, &k("degree"))?;
+            if d >= 0.0 && d.fract() == 0.0 && d <= 1024.0 {
+                Ok(d as usize)
+            } else {
+                Err(self.fail(i, &k("degree"), "expected a whole number of at most 1024"))
+            }
+        };
+        let curve = match ty {
+            "bezier" => {
+                self.sweep_nested_keys(&n, &["points"])?;
+                Bezier::new(points("points")?).map(Curve::Bezier)
+            }
+            "hermite" => {
+                self.sweep_nested_keys(&n, &["points", "tangents"])?;
+                let (p, m) = (points("points")?, points("tangents")?);
+                for (name, list) in [("points", &p), ("tangents", &m)] {
+                    if list.len() != 2 {
+                        let i = self.sweep_member(&n, name)?;
+                        return Err(self.fail(i, &k(name), "expected 2 points"));
+                    }
+                }
+                Hermite::new(p[0], m[0], p[1], m[1]).map(Curve::Hermite)
+            }
+            "bspline" => {
+                self.sweep_nested_keys(&n, &["degree", "points", "knots"])?;
+                let (d, p) = (degree()?, points("points")?);
+                match optional_list("knots")? {
+                    Some(knots) => BSpline::new(d, p, knots),
+                    None => BSpline::clamped(d, p),
+                }
+                .map(Curve::BSpline)
+            }
+            "nurbs" => {
+                self.sweep_nested_keys(&n, &["degree", "points", "weights", "knots"])?;
+                let (d, p) = (degree()?, points("points")?);
+                let w = optional_list("weights")?.unwrap_or_else(|| vec![1.0; p.len()]);
+                match optional_list("knots")? {
+                    Some(knots) => Nurbs::new(d, p, w, knots),
+                    None => Nurbs::clamped(d, p, w),
+                }
+                .map(Curve::Nurbs)
+            }
+            "interpolating" => {
+                self.sweep_nested_keys(&n, &["points", "closed"])?;
+                let closed = match super::find(n.entries, "closed") {
+                    Some(i) => match self.reader.doc.values[i as usize] {
+                        Value::Bool(b) => b,
+                        ref v => {
+                            return Err(self.fail(
+                                i,
+                                &k("closed"),
+                                format!("expected a boolean, found {}", v.type_name()),
+                            ));
+                        }
+                    },
+                    None => false,
+                };
+                Interpolating::new(points("points")?, closed).map(Curve::Interpolating)
+            }
+            other => {
+                let t = self.sweep_member(&n, "type")?;
+                return Err(self.fail(
+                    t,
+                    &k("type"),
+                    format!(
+                        "unknown curve type \"{other}\" (expected bezier, hermite, bspline, nurbs or interpolating)"
+                    ),
+                ));
+            }
+        };
+        curve.map_err(|e| self.sweep_curve_error(&n, e))
+    }
+}

@@ -1,0 +1,74 @@
+//! Writing the polyhedral node types back as they were read: `platonic` with the size key that
+//! was given, `polyhedron` with its vertices and faces, `mesh` with its path, `prism` with its
+//! polygon, holes (when there are any) and direction.
+
+use super::{num, vec3};
+use crate::primitive::{MeshSolid, MeshSource, Platonic};
+use glam::DVec2;
+
+/// The parameter members of a `platonic` node.
+pub(super) fn platonic(p: &Platonic) -> String {
+    format!(
+        "\"solid\": \"{}\", \"{}\": {}",
+        p.kind.name(),
+        p.size.parameter(),
+        num(p.size.value())
+    )
+}
+
+/// The parameter members of a mesh-backed node (`polyhedron`, `mesh` or `prism`).
+pub(super) fn mesh(m: &MeshSolid) -> String {
+    match m.source() {
+        MeshSource::Faces { vertices, faces } => {
+            let v: Vec<String> = vertices.iter().map(|p| vec3(*p)).collect();
+            let f: Vec<String> = faces
+                .iter()
+                .map(|f| {
+                    let i: Vec<String> = f.iter().map(u32::to_string).collect();
+                    format!("[{}]", i.join(", "))
+                })
+                .collect();
+            format!(
+                "\"vertices\": [{}], \"faces\": [{}]",
+                v.join(", "),
+                f.join(", ")
+            )
+        }
+        MeshSource::File { path } => format!("\"path\": {}", string(path)),
+        MeshSource::Prism(p) => {
+            let mut s = format!("\"polygon\": {}", points2(&p.polygon));
+            if !p.holes.is_empty() {
+                let h: Vec<String> = p.holes.iter().map(|h| points2(h)).collect();
+                s += &format!(", \"holes\": [{}]", h.join(", "));
+            }
+            s + &format!(", \"direction\": {}", vec3(p.direction))
+        }
+    }
+}
+
+fn points2(points: &[DVec2]) -> String {
+    let p: Vec<String> = points
+        .iter()
+        .map(|p| format!("[{}, {}]", num(p.x), num(p.y)))
+        .collect();
+    format!("[{}]", p.join(", "))
+}
+
+/// A JSON string literal.
+fn string(s: &str) -> String {
+    let mut out = String::with_capacity(s.len() + 2);
+    out.push('"');
+    for c in s.chars() {
+        match c {
+            '"' => out.push_str("\\\""),
+            '\\' => out.push_str("\\\\"),
+            '\n' => out.push_str("\\n"),
+            '\r' => out.push_str("\\r"),
+            '\t' => out.push_str("\\t"),
+            c if (c as u32) < 0x20 => out.push_str(&format!("\\u{:04x}", c as u32)),
+            c => out.push(c),
+        }
+    }
+    out.push('"');
+    out
+}

@@ -1,0 +1,28 @@
+//! Exact polyhedra: polygonal faces, counts (V, E, F and Euler's formula `V − E + F = 2` for
+//! simple polyhedra), the five Platonic solids, duals of convex polyhedra, prisms swept from
+//! polygons with holes, and triangulation into an [`IndexedMesh`](crate::IndexedMesh).
+//!
+//! Polygonal faces and prism caps are triangulated by constrained Delaunay triangulation
+//! (`spade`), never as fans, so non-convex faces and holes come out right. These are exact
+//! tessellations; to use a polyhedron in a CSG tree see [`Solid::platonic`](crate::Solid::platonic)
+//! (an exact field from face planes) and [`Solid::from_polyhedron`](crate::Solid::from_polyhedron)
+//! (any polyhedron through its triangle mesh).
+
+mod dual;
+mod error;
+mod hull;
+mod platonic;
+mod polyhedron;
+mod prism;
+mod triangulate;
+
+#[cfg(test)]
+mod tests;
+
+pub use error::PolyhedronError;
+pub(crate) use platonic::unit as unit_platonic;
+pub use platonic::{PlatonicKind, PlatonicSize};
+pub use polyhedron::Polyhedron;
+pub use prism::Prism;
+pub use triangulate::TriangulationError;
+pub(crate) use triangulate::triangulate_face;

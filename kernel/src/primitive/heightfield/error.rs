@@ -1,0 +1,67 @@
+//! Why a height field cannot be built or loaded.
+
+use crate::primitive::PrimitiveError;
+use std::path::PathBuf;
+
+/// A height field that cannot be built or loaded.
+#[derive(Debug, thiserror::Error)]
+pub enum HeightFieldError {
+    /// A scalar parameter is invalid.
+    #[error(transparent)]
+    Parameter(#[from] PrimitiveError),
+    /// Fewer than 2 × 2 heights.
+    #[error("heights: need at least 2 × 2 values, got {nx} × {ny}")]
+    GridTooSmall {
+        /// Columns given.
+        nx: usize,
+        /// Rows given.
+        ny: usize,
+    },
+    /// The value count does not match the size.
+    #[error("heights: {nx} × {ny} grid needs {} values, got {len}", nx * ny)]
+    GridShape {
+        /// Columns.
+        nx: usize,
+        /// Rows.
+        ny: usize,
+        /// Values given.
+        len: usize,
+    },
+    /// Rows of different lengths.
+    #[error("heights: row {row} has {len} values, expected {expected}")]
+    RaggedRows {
+        /// The first bad row.
+        row: usize,
+        /// Its length.
+        len: usize,
+        /// The first row's length.
+        expected: usize,
+    },
+    /// A NaN or infinite height.
+    #[error("heights: value at column {column}, row {row} is not finite")]
+    NonFinite {
+        /// Column of the first bad value.
+        column: usize,
+        /// Row of the first bad value.
+        row: usize,
+    },
+    /// The height map file cannot be read.
+    #[error("cannot read height map {path}: {source}")]
+    Io {
+        /// The file.
+        path: PathBuf,
+        /// The I/O error.
+        source: std::io::Error,
+    },
+    /// The PNG data is malformed.
+    #[error("cannot decode PNG height map: {0}")]
+    Png(#[from] png::DecodingError),
+    /// The PNG is not a grayscale image.
+    #[error("PNG height map must be grayscale (8 or 16 bits), found {color:?} at {bits} bits")]
+    NotGrayscale {
+        /// The image's color type.
+        color: png::ColorType,
+        /// Bits per sample.
+        bits: u8,
+    },
+}

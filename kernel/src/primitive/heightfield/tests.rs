@@ -1,0 +1,316 @@
+//! Tests of height fields: conformance for every source, the exact zero set, honest slope bounds,
+//! curvature against closed forms, and PNG decoding.
+
+use super::*;
+use crate::primitive::conformance::{Rng, check_shape};
+
+fn bezier_bump() -> HeightField {
+    let rows = vec![
+        vec![0.2, 0.5, 0.4, 0.3],
+        vec![0.4, 1.2, 1.0, 0.5],
+        vec![0.3, 0.9, 1.4, 0.6],
+    ];
+    let grid = HeightGrid::from_rows(&rows).unwrap();
+    HeightField::new(
+        DVec2::new(-1.0, -0.5),
+        DVec2::new(1.0, 0.7),
+        -0.3,
+        HeightSource::Bezier(grid),
+    )
+    .unwrap()
+}
+
+fn sampled(interpolation: Interpolation) -> HeightField {
+    let (nx, ny) = (7, 5);
+    let values = (0..nx * ny)
+        .map(|k| {
+            let (i, j) = ((k % nx) as f64, (k / nx) as f64);
+            0.5 + 0.3 * (1.3 * i).sin() * (0.9 * j).cos()
+        })
+        .collect();
+    let grid = HeightGrid::new(nx, ny, values).unwrap();
+    HeightField::new(
+        DVec2::new(-1.2, -1.0),
+        DVec2::new(1.0, 0.8),
+        0.0,
+        HeightSource::Samples {
+            grid,
+            interpolation,
+        },
+    )
+    .unwrap()
+}
+
+/// `h = (x² + y²) / (2R)` over `[−a, a]²` as an exact biquadratic Bézier patch.
+fn paraboloid(a: f64, r: f64) -> HeightField {
+    let c = [1.0, -1.0, 1.0];
+    let rows: Vec<Vec<f64>> = (0..3)
+        .map(|j| (0..3).map(|i| a * a * (c[i] + c[j]) / (2.0 * r)).collect())
+        .collect();
+    HeightField::new(
+        DVec2::splat(-a),
+        DVec2::splat(a),
+        -1.0,
+        HeightSource::Bezier(HeightGrid::from_rows(&rows).unwrap()),
+    )
+    .unwrap()
+}
+
+#[test]
+fn every_source_conforms() {
+    check_shape(&bezier_bump(), 1.6);
+    check_shape(&sampled(Interpolation::Bilinear), 1.6);
+    check_shape(&sampled(Interpolation::Bicubic), 1.6);
+    check_shape(&paraboloid(1.0, 0.8), 1.6);
+}
+
+#[test]
+fn zero_set_is_the_graph_and_the_base() {
+    let mut rng = Rng::new(41);
+    for hf in [
+        bezier_bump(),
+        sampled(Interpolation::Bicubic),
+        sampled(Interpolation::Bilinear),
+    ] {
+        let (lo, hi) = (hf.min(), hf.max());
+        for _ in 0..500 {
+            let t = (DVec2::new(rng.next(), rng.next()) + 1.0) * 0.5;
+            let xy = lo + (hi - lo) * (0.01 + 0.98 * t);
+            let h = hf.height(xy.x, xy.y);
+            assert!(hf.value(xy.extend(h)).abs() < 1e-12);
+            assert!(hf.value(xy.extend(h + 1e-3)) > 0.0);
+            assert!(hf.value(xy.extend(h - 1e-3)) < 0.0);
+            assert!(hf.value(xy.extend(hf.base() - 1e-3)) > 0.0);
+            assert!(hf.value(xy.extend(hf.base())).abs() < 1e-12);
+        }
+    }
+}
+
+#[test]
+fn slope_bound_holds_and_is_not_loose_for_bezier() {
+    let mut rng = Rng::new(43);
+    for hf in [
+        bezier_bump(),
+        sampled(Interpolation::Bicubic),
+        sampled(Interpolation::Bilinear),
+    ] {
+        let (lo, hi) = (hf.min(), hf.max());
+        let mut steepest = 0.0f64;
+        for _ in 0..4000 {
+            let t = (DVec2::new(rng.next(), rng.next()) + 1.0) * 0.5;
+            let xy = lo + (hi - lo) * t;
+            let d = hf.derivatives(xy.x, xy.y);
+            let slope = DVec2::new(d.hx, d.hy).length();
+            assert!(
+                slope <= hf.slope_bound() * (1.0 + 1e-12),
+                "{slope} > {}",
+                hf.slope_bound()
+            );
+            steepest = steepest.max(slope);
+            let (hmin, hmax) = hf.height_range();
+            assert!(d.h >= hmin - 1e-12 && d.h <= hmax + 1e-12);
+        }
+        assert!(
+            steepest > 0.25 * hf.slope_bound(),
+            "bound {} vs {steepest}",
+            hf.slope_bound()
+        );
+    }
+}
+
+#[test]
+fn derivatives_match_finite_differences() {
+    for hf in [bezier_bump(), sampled(Interpolation::Bicubic)] {
+        let e = 1e-5;
+        for &(x, y) in &[(0.13, 0.21), (-0.7, -0.2), (0.5, 0.5)] {
+            let d = hf.derivatives(x, y);
+            let fx = (hf.height(x + e, y) - hf.height(x - e, y)) / (2.0 * e);
+            let fy = (hf.height(x, y + e) - hf.height(x, y - e)) / (2.0 * e);
+            assert!((fx - d.hx).abs() < 1e-6 && (fy - d.hy).abs() < 1e-6);
+            let dx = hf.derivatives(x + e, y);
+            let dy = hf.derivatives(x, y + e);
+            let dxm = hf.derivatives(x - e, y);
+            let dym = hf.derivatives(x, y - e);
+            assert!(((dx.hx - dxm.hx) / (2.0 * e) - d.hxx).abs() < 1e-5);
+            assert!(((dy.hy - dym.hy) / (2.0 * e) - d.hyy).abs() < 1e-5);
+            assert!(((dy.hx - dym.hx) / (2.0 * e) - d.hxy).abs() < 1e-5);
+        }
+    }
+}
+
+#[test]
+fn paraboloid_curvature_matches_closed_form() {
+    let (a, r) = (1.5, 0.8);
+    let hf = paraboloid(a, r);
+    for &(x, y) in &[(0.0, 0.0), (0.3, -0.4), (1.2, 0.9), (-1.5, 1.5)] {
+        assert!((hf.height(x, y) - (x * x + y * y) / (2.0 * r)).abs() < 1e-12);
+        let c = hf.curvature(x, y);
+        let q = (x * x + y * y) / (r * r);
+        let k = 1.0 / (r * r * (1.0 + q) * (1.0 + q));
+        let h = (2.0 + q) / (2.0 * r * (1.0 + q).powf(1.5));
+        assert!((c.gaussian - k).abs() < 1e-12, "{c:?} vs K {k}");
+        assert!((c.mean - h).abs() < 1e-12, "{c:?} vs H {h}");
+    }
+    // Hessian bound: h_xx = h_yy = 1/R, h_xy = 0, so the spectral norm 1/R is within √2.
+    let m = hf.hessian_bound().unwrap();
+    assert!(m >= 1.0 / r - 1e-12 && m <= 2f64.sqrt() / r + 1e-12, "{m}");
+}
+
+#[test]
+fn bicubic_sphere_cap_has_curvature_near_closed_form() {
+    // A cap of the sphere of radius 2 sampled on a 41 × 41 grid over [−0.8, 0.8]².
+    let (r, n, a) = (2.0, 41usize, 0.8);
+    let values = (0..n * n)
+        .map(|k| {
+            let x = -a + 2.0 * a * (k % n) as f64 / (n - 1) as f64;
+            let y = -a + 2.0 * a * (k / n) as f64 / (n - 1) as f64;
+            (r * r - x * x - y * y).sqrt()
+        })
+        .collect();
+    let grid = HeightGrid::new(n, n, values).unwrap();
+    let hf = HeightField::new(
+        DVec2::splat(-a),
+        DVec2::splat(a),
+        0.0,
+        HeightSource::Samples {
+            grid,
+            interpolation: Interpolation::Bicubic,
+        },
+    )
+    .unwrap();
+    for &(x, y) in &[(0.0, 0.0), (0.3, 0.2), (-0.4, 0.5)] {
+        let c = hf.curvature(x, y);
+        assert!((c.gaussian - 1.0 / (r * r)).abs() < 0.02 / (r * r), "{c:?}");
+        assert!((c.mean + 1.0 / r).abs() < 0.02 / r, "{c:?}");
+    }
+}
+
+#[test]
+fn samples_are_interpolated() {
+    for interpolation in [Interpolation::Bilinear, Interpolation::Bicubic] {
+        let hf = sampled(interpolation);
+        let g = hf.source().grid();
+        for j in 0..g.ny() {
+            for i in 0..g.nx() {
+                let u = i as f64 / (g.nx() - 1) as f64;
+                let v = j as f64 / (g.ny() - 1) as f64;
+                let p = hf.point_at(u, v);
+                assert!((p.z - g.get(i, j)).abs() < 1e-12);
+            }
+        }
+    }
+}
+
+fn encode(
+    width: u32,
+    height: u32,
+    depth: ::png::BitDepth,
+    color: ::png::ColorType,
+    data: &[u8],
+) -> Vec<u8> {
+    let mut out = Vec::new();
+    {
+        let mut enc = ::png::Encoder::new(&mut out, width, height);
+        enc.set_color(color);
+        enc.set_depth(depth);
+        let mut w = enc.write_header().unwrap();
+        w.write_image_data(data).unwrap();
+    }
+    out
+}
+
+#[test]
+fn png_height_maps_decode_in_8_and_16_bits() {
+    // 3 × 2 image; top row (row 0) maps to the largest y.
+    let eight = encode(
+        3,
+        2,
+        ::png::BitDepth::Eight,
+        ::png::ColorType::Grayscale,
+        &[0, 51, 255, 102, 153, 204],
+    );
+    let g = decode_png(&eight).unwrap();
+    assert_eq!((g.nx(), g.ny()), (3, 2));
+    assert_eq!(g.get(0, 1), 0.0);
+    assert_eq!(g.get(2, 1), 1.0);
+    assert!((g.get(1, 0) - 0.6).abs() < 1e-12);
+    let words: Vec<u8> = [0u16, 65535, 32768, 1, 2, 3]
+        .iter()
+        .flat_map(|w| w.to_be_bytes())
+        .collect();
+    let sixteen = encode(
+        3,
+        2,
+        ::png::BitDepth::Sixteen,
+        ::png::ColorType::Grayscale,
+        &words,
+    );
+    let g = decode_png(&sixteen).unwrap();
+    assert_eq!(g.get(1, 1), 1.0);
+    assert!((g.get(2, 1) - 32768.0 / 65535.0).abs() < 1e-15);
+    assert!((g.get(0, 0) - 1.0 / 65535.0).abs() < 1e-15);
+    let rgb = encode(1, 2, ::png::BitDepth::Eight, ::png::ColorType::Rgb, &[0; 6]);
+    assert!(matches!(
+        decode_png(&rgb),
+        Err(HeightFieldError::NotGrayscale { .. })
+    ));
+    assert!(matches!(
+        decode_png(b"not a png"),
+        Err(HeightFieldError::Png(_))
+    ));
+}
+
+#[test]
+fn png_file_makes_a_height_field() {
+    let dir = std::env::temp_dir().join(format!("solidkit-hf-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let path = dir.join("ramp.png");
+    let data: Vec<u8> = (0..16).map(|k| (k % 4) as u8 * 85).collect();
+    std::fs::write(
+        &path,
+        encode(
+            4,
+            4,
+            ::png::BitDepth::Eight,
+            ::png::ColorType::Grayscale,
+            &data,
+        ),
+    )
+    .unwrap();
+    let hf = HeightField::from_png(
+        DVec2::ZERO,
+        DVec2::new(3.0, 3.0),
+        0.0,
+        &path,
+        [1.0, 2.0],
+        Interpolation::Bilinear,
+    )
+    .unwrap();
+    // Heights ramp from 1 at x = 0 to 2 at x = 3, so the slope is exactly 1/3.
+    assert!((hf.height(1.5, 2.0) - 1.5).abs() < 1e-12);
+    assert!((hf.slope_bound() - 1.0 / 3.0).abs() < 1e-12);
+    assert_eq!(hf.png_origin().unwrap().heights, [1.0, 2.0]);
+    let missing = HeightField::from_png(
+        DVec2::ZERO,
+        DVec2::ONE,
+        0.0,
+        &dir.join("none.png"),
+        [0.0, 1.0],
+        Interpolation::Bilinear,
+    );
+    assert!(matches!(missing, Err(HeightFieldError::Io { .. })));
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
+#[test]
+fn invalid_height_fields_are_rejected() {
+    let g = HeightGrid::from_rows(&[vec![1.0, 1.0], vec![1.0, 1.0]]).unwrap();
+    let src = HeightSource::Bezier(g);
+    let bad_rect = HeightField::new(DVec2::ONE, DVec2::ZERO, 0.0, src.clone());
+    assert!(matches!(bad_rect, Err(HeightFieldError::Parameter(e)) if e.parameter == "min"));
+    let above = HeightField::new(DVec2::ZERO, DVec2::ONE, 1.0, src);
+    assert!(matches!(above, Err(HeightFieldError::Parameter(e)) if e.parameter == "base"));
+    assert!(HeightGrid::from_rows(&[vec![1.0, 2.0], vec![1.0]]).is_err());
+    assert!(HeightGrid::new(1, 3, vec![0.0; 3]).is_err());
+    assert!(HeightGrid::new(2, 2, vec![0.0, f64::NAN, 0.0, 0.0]).is_err());
+}

@@ -1,0 +1,29 @@
+//! Polyhedral primitives: the Platonic solids (exact face-plane field) and any triangle mesh as a
+//! CSG operand (exact signed distance through a BVH, inside/outside by fast winding numbers), which
+//! also carries inline polyhedra, mesh files and prisms.
+//!
+//! | primitive | field | `field_error` |
+//! |---|---|---|
+//! | [`Platonic`] | max of face-plane distances (exact inside, a bound outside) | 0 |
+//! | [`MeshSolid`] | exact signed distance to the mesh (closed meshes) | 0 |
+//!
+//! Both are 1-Lipschitz.
+//!
+//! `field_error` is the distance between the field's zero set and the exact surface.
+
+mod build;
+mod mesh_solid;
+mod nearest;
+mod platonic;
+mod resolver;
+mod tree;
+mod winding;
+
+#[cfg(test)]
+mod json_tests;
+#[cfg(test)]
+mod tests;
+
+pub use mesh_solid::{MeshSolid, MeshSolidError, MeshSource};
+pub use platonic::Platonic;
+pub use resolver::{MeshResolver, NoMeshResolver};

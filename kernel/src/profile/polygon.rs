@@ -1,0 +1,225 @@
+//! The polygon profile with holes: loops of corners, inside by the **even-odd rule** (a point is
+//! inside when a ray from it crosses the loops an odd number of times), so the orientation of
+//! the loops does not matter and a hole is simply a loop inside the outline. The signed distance
+//! is exact: the distance to the nearest edge of any loop, negative inside.
+//!
+//! The distance is computed from corner accessors, so lofts evaluate it on interpolated corners
+//! without building a polygon.
+
+use super::error::ProfileError;
+use glam::DVec2;
+
+/// A polygon: an outline and holes, each a closed loop of corners (last joined to first).
+#[derive(Debug, Clone, PartialEq)]
+pub struct Polygon {
+    loops: Vec<Vec<DVec2>>,
+}
+
+/// The nearest boundary point of a set of loops.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) struct Nearest {
+    /// Signed distance (negative inside by the even-odd rule).
+    pub distance: f64,
+    /// Gradient of the signed distance (unit length).
+    pub gradient: DVec2,
+    /// Loop of the nearest edge.
+    pub ring: usize,
+    /// Index of the nearest edge's first corner within its loop.
+    pub edge: usize,
+    /// Position of the nearest point along that edge (0 at its first corner, 1 at the next).
+    pub lambda: f64,
+}
+
+/// The signed distance from `q` to the loops `0..loops`, loop `r` having `len(r)` corners
+/// `corner(r, i)`.
+pub(crate) fn loops_distance(
+    q: DVec2,
+    loops: usize,
+    len: impl Fn(usize) -> usize,
+    corner: impl Fn(usize, usize) -> DVec2,
+) -> Nearest {
+    loops_distance_skipping(q, loops, len, corner, |_, _| false)
+}
+
+/// [`loops_distance`] ignoring the edges `skip` selects for the distance (they still bound the
+/// region): a revolved profile's edges on the axis are inside the solid, not on its surface.
+pub(crate) fn loops_distance_skipping(
+    q: DVec2,
+    loops: usize,
+    len: impl Fn(usize) -> usize,
+    corner: impl Fn(usize, usize) -> DVec2,
+    skip: impl Fn(DVec2, DVec2) -> bool,
+) -> Nearest {
+    let mut inside = false;
+    let mut best = (f64::INFINITY, 0, 0, 0.0, DVec2::ZERO, DVec2::X);
+    for r in 0..loops {
+        let n = len(r);
+        let mut a = corner(r, n - 1);
+        for i in 0..n {
+            let b = corner(r, i);
+            let e = b - a;
+            let w = q - a;
+            let l2 = e.length_squared();
+            let lambda = if l2 > 0.0 {
+                (w.dot(e) / l2).clamp(0.0, 1.0)
+            } else {
+                0.0
+            };
+            let c = a + e * lambda;
+            let d2 = (q - c).length_squared();
+            if d2 < best.0 && !skip(a, b) {
+                best = (d2, r, (i + n - 1) % n, lambda, c, e);
+            }
+            if (a.y > q.y) != (b.y > q.y) && q.x < a.x + (q.y - a.y) * (b.x - a.x) / (b.y - a.y) {
+                inside = !inside;
+            }
+            a = b;
+        }
+    }
+    let (d2, ring, edge, lambda, c, e) = best;
+    let d = d2.sqrt();
+    let away = if d > 0.0 {
+        (q - c) / d
+    } else {
+        DVec2::new(e.y, -e.x).normalize_or(DVec2::X)
+    };
+    let (distance, gradient) = if inside { (-d, -away) } else { (d, away) };
+    Nearest {
+        distance,
+        gradient,
+        ring,
+        edge,
+        lambda,
+    }
+}
+
+/// Twice the signed area of a loop (positive counter-clockwise).
+pub(crate) fn signed_area2(corners: &[DVec2]) -> f64 {
+    let n = corners.len();
+    (0..n)
+        .map(|i| corners[i].perp_dot(corners[(i + 1) % n]))
+        .sum()
+}
+
+/// Whether `q` is inside the loop (crossing rule).
+pub(crate) fn inside_loop(q: DVec2, corners: &[DVec2]) -> bool {
+    let n = corners.len();
+    let mut inside = false;
+    for i in 0..n {
+        let (a, b) = (corners[(i + n - 1) % n], corners[i]);
+        if (a.y > q.y) != (b.y > q.y) && q.x < a.x + (q.y - a.y) * (b.x - a.x) / (b.y - a.y) {
+            inside = !inside;
+        }
+    }
+    inside
+}
+
+fn check_loop(parameter: &'static str, corners: &[DVec2]) -> Result<(), ProfileError> {
+    if corners.len() < 3 {
+        return Err(ProfileError::TooFewPoints {
+            parameter,
+            found: corners.len(),
+        });
+    }
+    if corners.iter().any(|c| !c.is_finite()) {
+        return Err(ProfileError::NonFinite { parameter });
+    }
+    let n = corners.len();
+    if let Some(index) = (0..n).find(|&i| corners[i] == corners[(i + 1) % n]) {
+        return Err(ProfileError::RepeatedPoint { parameter, index });
+    }
+    let scale = corners
+        .iter()
+        .map(|c| c.length_squared())
+        .fold(0.0, f64::max);
+    if signed_area2(corners).abs() <= 1e-14 * scale {
+        return Err(ProfileError::ZeroArea { parameter });
+    }
+    Ok(())
+}
+
+impl Polygon {
+    /// The polygon with outline `points` and `holes` (each at least 3 corners, finite, no two
+    /// consecutive corners equal, non-zero area).
+    pub fn new(points: Vec<DVec2>, holes: Vec<Vec<DVec2>>) -> Result<Polygon, ProfileError> {
+        check_loop("points", &points)?;
+        for h in &holes {
+            check_loop("holes", h)?;
+        }
+        let mut loops = vec![points];
+        loops.extend(holes);
+        Ok(Polygon { loops })
+    }
+
+    /// The outline's corners.
+    pub fn points(&self) -> &[DVec2] {
+        &self.loops[0]
+    }
+
+    /// The holes' corners.
+    pub fn holes(&self) -> &[Vec<DVec2>] {
+        &self.loops[1..]
+    }
+
+    /// Every loop: the outline first, then the holes.
+    pub fn loops(&self) -> &[Vec<DVec2>] {
+        &self.loops
+    }
+
+    /// Signed distance and gradient with details of the nearest edge.
+    pub(crate) fn nearest(&self, q: DVec2) -> Nearest {
+        loops_distance(
+            q,
+            self.loops.len(),
+            |r| self.loops[r].len(),
+            |r, i| self.loops[r][i],
+        )
+    }
+
+    /// Signed distance and its gradient.
+    pub fn distance_gradient(&self, q: DVec2) -> (f64, DVec2) {
+        let n = self.nearest(q);
+        (n.distance, n.gradient)
+    }
+
+    /// Signed distance and gradient ignoring the edges on the y axis (both corners at x = 0).
+    pub(crate) fn distance_gradient_off_axis(&self, q: DVec2) -> (f64, DVec2) {
+        let n = loops_distance_skipping(
+            q,
+            self.loops.len(),
+            |r| self.loops[r].len(),
+            |r, i| self.loops[r][i],
+            |a, b| a.x == 0.0 && b.x == 0.0,
+        );
+        (n.distance, n.gradient)
+    }
+
+    /// Area and centroid of the even-odd region, for loops that do not cross: a loop inside an
+    /// even number of others adds its area, inside an odd number subtracts it.
+    pub fn area_centroid(&self) -> (f64, DVec2) {
+        let mut area = 0.0;
+        let mut moment = DVec2::ZERO;
+        for (r, corners) in self.loops.iter().enumerate() {
+            let depth = self
+                .loops
+                .iter()
+                .enumerate()
+                .filter(|&(o, other)| o != r && inside_loop(corners[0], other))
+                .count();
+            let sign = if depth.is_multiple_of(2) { 1.0 } else { -1.0 };
+            let a2 = signed_area2(corners);
+            let n = corners.len();
+            let c: DVec2 = (0..n)
+                .map(|i| {
+                    let (p, q) = (corners[i], corners[(i + 1) % n]);
+                    (p + q) * p.perp_dot(q)
+                })
+                .sum::<DVec2>()
+                / (3.0 * a2);
+            let a = 0.5 * a2.abs();
+            area += sign * a;
+            moment += c * (sign * a);
+        }
+        (area, moment / area)
+    }
+}
