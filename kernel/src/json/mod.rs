@@ -18,6 +18,17 @@
 //! counter-clockwise from outside), `mesh` (path of an STL/OBJ/PLY/OFF file, loaded through a
 //! [`MeshResolver`]: see [`from_str_with`]), `prism` (polygon: [[x, y], …], optional holes,
 //! direction).
+//! Quadrics: `ellipsoid` (radii), `quadric` (coefficients {a, b, c, f, g, h, p, q, r, d}, bounds),
+//! `elliptic_cylinder` / `elliptic_cone` / `elliptic_paraboloid` / `hyperbolic_paraboloid`
+//! (radii [a, b], bounds), `hyperboloid_one_sheet` / `hyperboloid_two_sheets` (radii, bounds);
+//! bounds are `[[x, y, z], [x, y, z]]`. Metaballs: `blob` (threshold, balls: [{center, strength,
+//! sharpness}]). Height fields: `heightfield` (min [x, y], max [x, y], base, and one of `bezier`,
+//! `samples` with optional `interpolation`, or `png` with `heights`). Sweeps: `extrude` (profile,
+//! height, twist, scale), `revolve` (profile, angle), `sweep` (profile, path), `loft` (bottom, top,
+//! height), `ruled` (bottom, top); profiles `circle` / `rectangle` / `polygon`; curves `bezier` /
+//! `hermite` / `bspline` / `nurbs` / `interpolating`. Others: `gyroid` (thickness),
+//! `smooth_union` / `smooth_intersection` / `smooth_difference` (radius, children), `offset`
+//! (distance, child), `shell` (thickness, child).
 //! Any node may carry a `comment` string.
 
 mod document;

@@ -1,8 +1,21 @@
 //! Primitive solids in their canonical frames (centred at the origin, axis along z), each in its
-//! own file with its value, gradient, interval bound over a box and bounding box.
+//! own file or folder with its value, gradient, interval bound over a box, bounding box and
+//! Lipschitz bound. A box's interval can always fall back to `f(centre) ± L · half-diagonal`.
 //!
-//! Every primitive here is an exact signed distance (Lipschitz constant 1), so a box's interval
-//! can always fall back to `f(centre) ± half-diagonal`.
+//! What each field is, and its `field_error` — the distance between the field's zero set and the
+//! exact surface (the meshers add their own discretisation error on top):
+//!
+//! | primitive | field | L | field_error |
+//! |---|---|---|---|
+//! | sphere, box, cylinder, cone, torus, half-space | exact signed distance | 1 | 0 |
+//! | gyroid | `|g| − t` (not a distance) | √6 | 0 |
+//! | platonic | max of face-plane distances (exact inside, lower bound outside) | 1 | 0 |
+//! | polyhedron / mesh / prism | exact distance to the triangles, sign by winding number | 1 | 0 for closed meshes |
+//! | ellipsoid | `min(radii) · (|p / radii| − 1)`, a distance bound | 1 | 0 |
+//! | quadric (general and named) | gradient-normalised `Q / |∇Q|` near the surface, bounded by its box | 2 | 0 inside the box |
+//! | blob (metaballs) | `T − Σ bₖ exp(−aₖ rₖ²)` | `Σ |bₖ| √(2aₖ) e^{−1/2}` | 0 |
+//! | height field | `(z − h) / √(1 + L_h²)` with the box sides | 1 | 0 (h as interpolated) |
+//! | extrude, revolve, sweep, loft, ruled | exact distance where cheap, else slice distance / L | see each type | 0 |
 
 pub mod blob;
 mod cone;
