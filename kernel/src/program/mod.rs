@@ -1,7 +1,7 @@
 //! The tree lowered to a flat program: the form every evaluator runs.
 //!
 //! [`Program`] is a list of instructions in SSA form (instruction `i` defines value `i`, operands are
-//! earlier values). Lowering ([`lower`]) folds every chain of transforms into one inverse affine map
+//! earlier values). Lowering (`lower.rs`) folds every chain of transforms into one inverse affine map
 //! per leaf ([`Frame`]), shares identical subtrees (the same node under the same frame, and
 //! structurally equal leaves) and turns n-ary Booleans into binary `Min`/`Max` with `Neg` for
 //! subtrahends. Registers are allocated by liveness so batch evaluation touches few buffers.
@@ -30,9 +30,9 @@ use std::sync::Arc;
 pub enum Instr {
     /// Primitive `prim` evaluated in frame `frame`, scaled by the frame's distance factor.
     Leaf {
-        /// Index into [`Program::primitives`].
+        /// Index into the program's primitive list.
         prim: u32,
-        /// Index into [`Program::frames`].
+        /// Index into the program's frame list.
         frame: u32,
     },
     /// `min(a, b)`.
