@@ -7,8 +7,8 @@
 //! values inside their boxes, culled boxes contain no sign change, and vertices and triangles are
 //! numbered by sorting on grid keys in the dense path's order.
 //!
-//! [`subdivide`] builds the octree level by level (parallel within a level); [`brick`] samples and
-//! triangulates one leaf; [`assemble`] merges the bricks into a mesh.
+//! `subdivide.rs` builds the octree level by level (parallel within a level); `brick.rs` samples and
+//! triangulates one leaf; `assemble.rs` merges the bricks into a mesh.
 
 mod assemble;
 mod brick;
