@@ -41,11 +41,9 @@ impl Shape for Cuboid {
     }
     fn interval(&self, b: &Aabb) -> Interval {
         let h = self.half();
-        let q: Vec<Interval> = (0..3)
-            .map(|i| Interval::new(b.min[i], b.max[i]).abs() - Interval::point(h[i]))
-            .collect();
+        let q = [0, 1, 2].map(|i| Interval::new(b.min[i], b.max[i]).abs() - Interval::point(h[i]));
         let zero = Interval::point(0.0);
-        let outside = Interval::norm(&[q[0].max(zero), q[1].max(zero), q[2].max(zero)]);
+        let outside = Interval::norm(&q.map(|x| x.max(zero)));
         let inside = q[0].max(q[1]).max(q[2]).min(zero);
         outside + inside
     }

@@ -65,9 +65,12 @@ impl Program {
             let v = match *ins {
                 Instr::Leaf { prim, frame } => {
                     let f = &self.frames[frame as usize];
-                    self.primitives[prim as usize]
-                        .interval(&f.apply_box(b))
-                        .scale(f.sigma)
+                    let iv = self.primitives[prim as usize].interval(&f.apply_box(b));
+                    if f.sigma == 1.0 {
+                        iv
+                    } else {
+                        iv.scale(f.sigma)
+                    }
                 }
                 Instr::Min(a, c) => {
                     let (x, y) = (s.slots[a as usize], s.slots[c as usize]);
@@ -185,17 +188,20 @@ impl Program {
 }
 
 fn choose(x: Interval, y: Interval, scale: f64, is_min: bool) -> Choice {
+    // One margin for both comparisons, from the largest magnitude involved: at least the margin
+    // of each pair, so it is as safe and cheaper.
+    let big =
+        x.lo.abs()
+            .max(x.hi.abs())
+            .max(y.lo.abs())
+            .max(y.hi.abs())
+            .min(1e30);
+    let m = 3e-5 * (scale + 2.0 * big);
     // For min, x always wins when x.hi < y.lo (by the margin); for max when x.lo > y.hi.
     let (x_wins, y_wins) = if is_min {
-        (
-            x.hi < y.lo - margin(scale, x.hi, y.lo),
-            y.hi < x.lo - margin(scale, y.hi, x.lo),
-        )
+        (x.hi < y.lo - m, y.hi < x.lo - m)
     } else {
-        (
-            x.lo > y.hi + margin(scale, x.lo, y.hi),
-            y.lo > x.hi + margin(scale, y.lo, x.hi),
-        )
+        (x.lo > y.hi + m, y.lo > x.hi + m)
     };
     if x_wins {
         Choice::Left

@@ -41,6 +41,8 @@ pub(crate) struct BrickOutput {
     pub triangles: BrickTriangles,
     /// Samples evaluated.
     pub samples: u64,
+    /// Seconds spent evaluating the samples.
+    pub evaluation_s: f64,
 }
 
 /// The crossing edges a brick owns, row by row.
@@ -76,6 +78,7 @@ pub(crate) struct BrickScratch {
     values: Vec<f32>,
     inside: Vec<u8>,
     batch: BatchScratch,
+    evaluation_s: f64,
 }
 
 /// Samples the brick's points (x fastest) with its program into `s.values` and `s.inside`.
@@ -95,8 +98,10 @@ fn sample(node: &Node, spec: &GridSpec, n: [usize; 3], s: &mut BrickScratch) {
     }
     s.values.clear();
     s.values.resize(count, 0.0);
+    let start = std::time::Instant::now();
     node.program
         .eval_many(&s.x, &s.y, &s.z, &mut s.values, &mut s.batch);
+    s.evaluation_s = start.elapsed().as_secs_f64();
     s.inside.clear();
     s.inside
         .extend(s.values.iter().map(|&v| u8::from(inside(v))));
@@ -191,5 +196,6 @@ pub(crate) fn process(
         edges,
         triangles: out,
         samples: s.values.len() as u64,
+        evaluation_s: s.evaluation_s,
     }
 }

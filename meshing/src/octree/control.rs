@@ -108,6 +108,8 @@ pub struct MeshStats {
     pub octree_s: f64,
     /// Seconds spent sampling and triangulating leaf bricks.
     pub bricks_s: f64,
+    /// Seconds of field evaluation (pruned programs) inside the bricks, summed over threads.
+    pub evaluation_cpu_s: f64,
     /// Seconds spent numbering and emitting the mesh.
     pub assemble_s: f64,
 }

@@ -71,6 +71,7 @@ pub fn mesh_sparse_into(
     }
     drop(leaves);
     stats.samples_evaluated = outputs.iter().map(|o| o.samples).sum();
+    stats.evaluation_cpu_s = outputs.iter().map(|o| o.evaluation_s).sum();
     let t2 = std::time::Instant::now();
     stats.bricks_s = (t2 - t1).as_secs_f64();
     outputs.sort_unstable_by_key(|o| (o.edges.coord[2], o.edges.coord[1], o.edges.coord[0]));

@@ -1,6 +1,8 @@
 //! Raw single-thread evaluation rates, no pruning: `Program::eval_many` over a lattice of points
 //! (points/s) and `Program::interval_with` over octree-like boxes (boxes/s). Also the full
-//! `many-8456` program, whose rate tells what dense evaluation of every sample would cost.
+//! `many-8456` program, whose rate tells what dense evaluation of every sample would cost, and the
+//! rate of the pruned programs the sparse mesher actually evaluates for that model (samples per
+//! second of evaluation inside the leaf bricks, one thread).
 
 use super::case::median;
 use super::table::{Table, si};
@@ -9,6 +11,8 @@ use serde::Serialize;
 use solidkit_kernel::models::Model;
 use solidkit_kernel::models::workload::{lattice_points, octree_boxes};
 use solidkit_kernel::program::{BatchScratch, IntervalScratch};
+use solidkit_meshing::marching_cubes::GridSpec;
+use solidkit_meshing::octree::{SparseOptions, mesh_sparse};
 use std::hint::black_box;
 use std::time::Instant;
 
@@ -21,6 +25,8 @@ pub struct RawSizes {
     pub many_points: usize,
     /// Boxes for the interval rate.
     pub boxes: usize,
+    /// Resolution at which `many-8456` is meshed for the pruned evaluation rate.
+    pub many_resolution: usize,
 }
 
 impl Default for RawSizes {
@@ -29,6 +35,7 @@ impl Default for RawSizes {
             points: 1 << 22,
             many_points: 1 << 14,
             boxes: 1 << 20,
+            many_resolution: 256,
         }
     }
 }
@@ -105,7 +112,27 @@ pub fn run(sizes: &RawSizes, repeat: u32) -> Result<Vec<RawRow>> {
         }
     });
     rows.push(row("interval", &model, program.len(), sizes.boxes, times));
+    rows.push(pruned_row(sizes.many_resolution)?);
     Ok(rows)
+}
+
+/// Meshes `many-8456` on one thread and reports the evaluation rate of the pruned brick programs.
+fn pruned_row(resolution: usize) -> Result<RawRow> {
+    let model = Model::by_name("many-8456")?;
+    let program = model.solid.compile();
+    let spec = GridSpec::covering(&model.domain, resolution)?;
+    let pool = rayon::ThreadPoolBuilder::new().num_threads(1).build()?;
+    let (_, stats) = pool.install(|| mesh_sparse(&program, spec, &SparseOptions::default()))?;
+    let mean = stats.leaf_instructions / stats.surface_bricks.max(1) as u64;
+    Ok(RawRow {
+        kind: "pruned-eval",
+        model: model.name.clone(),
+        program_length: mean as usize,
+        count: stats.samples_evaluated as usize,
+        unit: "points",
+        rate_per_s: stats.samples_evaluated as f64 / stats.evaluation_cpu_s.max(1e-9),
+        times_s: vec![stats.evaluation_cpu_s],
+    })
 }
 
 /// The raw rates as a table.
@@ -143,6 +170,7 @@ mod tests {
             points: 1000,
             many_points: 10,
             boxes: 100,
+            many_resolution: 8,
         };
         let rows = run(&sizes, 1).expect("runs");
         let kinds: Vec<(&str, &str)> = rows.iter().map(|r| (r.kind, r.model.as_str())).collect();
@@ -152,7 +180,8 @@ mod tests {
                 ("eval", "sphere"),
                 ("eval", "gyroid-sphere"),
                 ("eval", "many-8456"),
-                ("interval", "sphere")
+                ("interval", "sphere"),
+                ("pruned-eval", "many-8456")
             ]
         );
         let text = table(&rows).render();
