@@ -26,6 +26,7 @@ mod simd;
 mod solid;
 pub mod tessellate;
 mod transform;
+pub mod triangulate;
 
 pub use aabb::Aabb;
 pub use error::KernelError;

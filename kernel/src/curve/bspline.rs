@@ -1,12 +1,9 @@
 //! B-spline curves of any degree with any valid knot vector (uniform, clamped, periodic or
 //! non-uniform), evaluated by de Boor's algorithm.
 
-use super::bezier::points_bbox;
+use super::CurveError;
 use super::error::finite_points;
-use super::piece::{BezierPiece, Jet};
-use super::spline::{Core, Rational, check_knots, clamped_knots, uniform_knots};
-use super::{Curve3, CurveError};
-use crate::Aabb;
+use super::spline::{Core, Rational, check_knots, clamped_knots, spline_curve3, uniform_knots};
 use glam::DVec3;
 
 /// A B-spline curve `C(t) = Σ Nᵢ,ₚ(t) Pᵢ` on `[knots[p], knots[n]]`.
@@ -74,20 +71,4 @@ impl BSpline {
     }
 }
 
-impl Curve3 for BSpline {
-    fn domain(&self) -> (f64, f64) {
-        self.spline.domain()
-    }
-    fn point(&self, t: f64) -> DVec3 {
-        self.spline.point(t)
-    }
-    fn jet(&self, t: f64) -> Jet {
-        self.spline.jet(t)
-    }
-    fn control_bbox(&self) -> Aabb {
-        points_bbox(&self.points)
-    }
-    fn pieces(&self) -> Vec<BezierPiece> {
-        self.spline.pieces()
-    }
-}
+spline_curve3!(BSpline);

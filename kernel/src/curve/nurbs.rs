@@ -2,12 +2,9 @@
 //! back by dividing by `w`. With positive weights they represent conics exactly; the circle
 //! constructors use the standard degree-2 construction (corner weights `√2/2`).
 
-use super::bezier::points_bbox;
+use super::CurveError;
 use super::error::finite_points;
-use super::piece::{BezierPiece, Jet};
-use super::spline::{Core, Rational, check_knots, clamped_knots};
-use super::{Curve3, CurveError};
-use crate::Aabb;
+use super::spline::{Core, Rational, check_knots, clamped_knots, spline_curve3};
 use glam::DVec3;
 use std::f64::consts::FRAC_1_SQRT_2;
 
@@ -137,20 +134,4 @@ fn rotate_quarter(x: f64, y: f64, quarter: usize) -> (f64, f64) {
     }
 }
 
-impl Curve3 for Nurbs {
-    fn domain(&self) -> (f64, f64) {
-        self.spline.domain()
-    }
-    fn point(&self, t: f64) -> DVec3 {
-        self.spline.point(t)
-    }
-    fn jet(&self, t: f64) -> Jet {
-        self.spline.jet(t)
-    }
-    fn control_bbox(&self) -> Aabb {
-        points_bbox(&self.points)
-    }
-    fn pieces(&self) -> Vec<BezierPiece> {
-        self.spline.pieces()
-    }
-}
+spline_curve3!(Nurbs);

@@ -158,6 +158,33 @@ impl Rational {
     }
 }
 
+/// Implements [`Curve3`](super::Curve3) for a spline curve type (B-spline or NURBS) with the
+/// fields `spline: Rational` (its homogeneous spline, evaluated by de Boor's algorithm and
+/// projected by dividing by `w`) and `points: Vec<DVec3>` (its control points, whose box bounds
+/// the curve).
+macro_rules! spline_curve3 {
+    ($curve:ty) => {
+        impl $crate::curve::Curve3 for $curve {
+            fn domain(&self) -> (f64, f64) {
+                self.spline.domain()
+            }
+            fn point(&self, t: f64) -> ::glam::DVec3 {
+                self.spline.point(t)
+            }
+            fn jet(&self, t: f64) -> $crate::curve::Jet {
+                self.spline.jet(t)
+            }
+            fn control_bbox(&self) -> $crate::Aabb {
+                $crate::curve::bezier::points_bbox(&self.points)
+            }
+            fn pieces(&self) -> Vec<$crate::curve::BezierPiece> {
+                self.spline.pieces()
+            }
+        }
+    };
+}
+pub(crate) use spline_curve3;
+
 /// Checks a degree and knot vector against `n` control points: `1 ≤ p ≤ n − 1`, `n + p + 1`
 /// finite non-decreasing knots, interior knots repeated at most `p` times (so the curve stays
 /// connected), and a non-empty domain.

@@ -6,8 +6,8 @@
 //! dual is the original scaled by `(inradius / circumradius)²`. For other convex polyhedra the
 //! dual's faces may be slightly non-planar (they are triangulated in their best-fit plane).
 
-use super::triangulate::newell;
 use super::{Polyhedron, PolyhedronError};
+use crate::triangulate::newell_normal;
 use glam::DVec3;
 
 impl Polyhedron {
@@ -45,7 +45,7 @@ impl Polyhedron {
                 .iter()
                 .map(|&i| self.vertices()[i as usize])
                 .collect();
-            let normal = newell(&points).normalize_or_zero();
+            let normal = newell_normal(&points).normalize_or_zero();
             let center = points.iter().sum::<DVec3>() / points.len() as f64;
             let offset = normal.dot(center);
             if let Some(vertex) = self

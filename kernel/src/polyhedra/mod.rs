@@ -3,10 +3,11 @@
 //! polygons with holes, and triangulation into an [`IndexedMesh`](crate::IndexedMesh).
 //!
 //! Polygonal faces and prism caps are triangulated by constrained Delaunay triangulation
-//! (`spade`), never as fans, so non-convex faces and holes come out right. These are exact
-//! tessellations; to use a polyhedron in a CSG tree see [`Solid::platonic`](crate::Solid::platonic)
-//! (an exact field from face planes) and [`Solid::from_polyhedron`](crate::Solid::from_polyhedron)
-//! (any polyhedron through its triangle mesh).
+//! (`spade`, through [`crate::triangulate`]), never as fans, so non-convex faces and holes come
+//! out right. These are exact tessellations; to use a polyhedron in a CSG tree see
+//! [`Solid::platonic`](crate::Solid::platonic) (an exact field from face planes) and
+//! [`Solid::from_polyhedron`](crate::Solid::from_polyhedron) (any polyhedron through its triangle
+//! mesh).
 
 mod dual;
 mod error;
@@ -14,15 +15,13 @@ mod hull;
 mod platonic;
 mod polyhedron;
 mod prism;
-mod triangulate;
 
 #[cfg(test)]
 mod tests;
 
+pub use crate::triangulate::TriangulationError;
 pub use error::PolyhedronError;
 pub(crate) use platonic::unit as unit_platonic;
 pub use platonic::{PlatonicKind, PlatonicSize};
 pub use polyhedron::Polyhedron;
 pub use prism::Prism;
-pub use triangulate::TriangulationError;
-pub(crate) use triangulate::triangulate_face;

@@ -3,8 +3,8 @@
 //! with the cycle of faces around each vertex (used by the dual).
 
 use super::PolyhedronError;
-use super::triangulate::triangulate_face;
 use crate::IndexedMesh;
+use crate::triangulate::triangulate_face;
 use glam::DVec3;
 
 /// A polyhedron with polygonal faces whose corners are counter-clockwise seen from outside.

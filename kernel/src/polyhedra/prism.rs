@@ -7,8 +7,8 @@
 //! their triangles, because a face with a hole is not a disc and V − E + F would no longer measure
 //! the genus (a prism with h holes has V − E + F = 2 − 2h).
 
-use super::triangulate::{signed_area2, triangulate_loops};
 use super::{Polyhedron, PolyhedronError};
+use crate::triangulate::{signed_area2, triangulate_loops};
 use glam::{DVec2, DVec3};
 
 /// A prism's parameters, kept exactly as given (loops in either orientation).

@@ -1,5 +1,7 @@
 //! Why a profile's parameters make no region, or why its boundary cannot be triangulated.
 
+use crate::triangulate::TriangulationError;
+
 /// A profile that cannot be used, or a cap that cannot be triangulated.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
 pub enum ProfileError {
@@ -37,9 +39,12 @@ pub enum ProfileError {
         /// `points` or `holes`.
         parameter: &'static str,
     },
-    /// The loops cannot be triangulated (they cross, or a hole is not inside its outline).
-    #[error("profile: the loops cannot be triangulated (edges cross or touch)")]
-    Triangulation,
+    /// The loops cannot be triangulated (they cross or touch, or a loop is degenerate).
+    #[error("profile: the loops cannot be triangulated: {problem}")]
+    Triangulation {
+        /// What is wrong with them.
+        problem: TriangulationError,
+    },
 }
 
 impl ProfileError {
@@ -51,7 +56,7 @@ impl ProfileError {
             | ProfileError::TooFewPoints { parameter, .. }
             | ProfileError::RepeatedPoint { parameter, .. }
             | ProfileError::ZeroArea { parameter } => parameter,
-            ProfileError::Triangulation => "points",
+            ProfileError::Triangulation { .. } => "points",
         }
     }
 }

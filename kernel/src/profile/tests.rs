@@ -139,6 +139,49 @@ fn triangulation_covers_the_region_with_the_expected_count() {
 }
 
 #[test]
+fn triangulation_follows_the_even_odd_rule_for_nested_and_separate_loops() {
+    // An outline with a hole holding an island, and a second outline beside it.
+    let loops = vec![
+        square(DVec2::ZERO, 2.0),
+        square(DVec2::ZERO, 1.0),
+        square(DVec2::ZERO, 0.5),
+        square(DVec2::new(4.0, 0.0), 1.0),
+    ];
+    let tris = triangulate(&loops).unwrap();
+    // Outline with one hole: 8 + 2 − 2; island and separate square: 4 − 2 each.
+    assert_eq!(tris.len(), 8 + 2 + 2);
+    let pts: Vec<DVec2> = loops.iter().flatten().copied().collect();
+    assert!(tris.iter().all(|t| triangle_area(&pts, t) > 0.0));
+    let total: f64 = tris.iter().map(|t| triangle_area(&pts, t)).sum();
+    assert!((total - (16.0 - 4.0 + 1.0 + 4.0)).abs() < 1e-12, "{total}");
+    let p = Profile::polygon(loops[0].clone(), loops[1..].to_vec()).unwrap();
+    for t in &tris {
+        let c = t.iter().map(|&i| pts[i as usize]).sum::<DVec2>() / 3.0;
+        assert!(p.distance(c) < 0.0, "{c}");
+    }
+}
+
+#[test]
+fn crossing_loops_cannot_be_triangulated() {
+    let loops = vec![square(DVec2::ZERO, 1.0), square(DVec2::new(0.9, 0.0), 0.5)];
+    let e = triangulate(&loops).unwrap_err();
+    assert_eq!(
+        e,
+        ProfileError::Triangulation {
+            problem: crate::triangulate::TriangulationError::SelfIntersecting
+        }
+    );
+    assert_eq!(e.parameter(), "points");
+    let e = triangulate(&[square(DVec2::ZERO, 1.0), vec![DVec2::ZERO]]).unwrap_err();
+    assert_eq!(
+        e,
+        ProfileError::Triangulation {
+            problem: crate::triangulate::TriangulationError::TooFewCorners(1)
+        }
+    );
+}
+
+#[test]
 fn invalid_profiles_name_their_key() {
     assert_eq!(Profile::circle(0.0).unwrap_err().parameter(), "radius");
     assert_eq!(

@@ -1,19 +1,21 @@
 //! Triangulation of one polygonal face (OBJ, PLY and OFF faces may have any number of corners).
 //!
-//! The polygon may be non-convex and slightly non-planar: it is projected onto the plane of its
-//! Newell normal and triangulated there with a constrained Delaunay triangulation (`spade`)
-//! whose constraint edges are the polygon boundary; only the triangles inside the boundary are
-//! kept. Triangles are emitted with the winding of the polygon. Fans are never used, so
-//! non-convex faces come out right. Triangles pass through unchanged and quads take a fast path
-//! that picks a diagonal keeping both halves oriented like the quad.
+//! Triangles pass through unchanged and quads take a fast path that picks a diagonal keeping both
+//! halves oriented like the quad. Larger polygons, which may be non-convex and slightly
+//! non-planar, are triangulated by the kernel's constrained Delaunay triangulation
+//! ([`solidkit_kernel::triangulate::triangulate_polygon`], with `spade`) in the plane of their
+//! Newell normal; only the triangles inside the boundary are kept. Triangles are emitted with the
+//! winding of the polygon, and fans are never used, so non-convex faces come out right.
 //!
-//! Invalid faces are reported, never "fixed": too few corners, coincident corners, zero area,
-//! boundaries that cross or touch themselves, and faces so non-planar that a triangle would
-//! face backwards. Every emitted triangle faces like the polygon's Newell normal.
+//! Invalid faces are reported, never "fixed": too few corners, corners out of range, coincident
+//! corners, zero area, boundaries that cross or touch themselves, and faces so non-planar that a
+//! triangle would face backwards. Every emitted triangle faces like the polygon's Newell normal.
+//! The kernel's [`TriangulationError`] becomes a [`PolygonError`] (with corners counted from 1
+//! along the face), which the readers locate at the face's line.
 
 use glam::DVec3;
-use spade::handles::{FixedFaceHandle, FixedVertexHandle, InnerTag};
-use spade::{ConstrainedDelaunayTriangulation, Point2, Triangulation};
+pub use solidkit_kernel::triangulate::newell_normal;
+use solidkit_kernel::triangulate::{self, TriangulationError};
 
 /// Why a polygonal face could not be triangulated.
 #[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
@@ -51,6 +53,29 @@ pub enum PolygonError {
     Folded,
 }
 
+impl From<TriangulationError> for PolygonError {
+    /// The same problem of a face; corners are counted from 1 along the face.
+    fn from(e: TriangulationError) -> PolygonError {
+        match e {
+            TriangulationError::TooFewCorners(n) => PolygonError::TooFewCorners(n),
+            TriangulationError::NonFinite => PolygonError::NonFinite,
+            TriangulationError::CoincidentCorners { first, second } => {
+                PolygonError::CoincidentCorners {
+                    first: first + 1,
+                    second: second + 1,
+                }
+            }
+            TriangulationError::Degenerate => PolygonError::Degenerate,
+            // A face has no holes: a boundary that does not enclose its region consistently
+            // crosses or touches itself.
+            TriangulationError::SelfIntersecting | TriangulationError::HoleOutside => {
+                PolygonError::SelfIntersecting
+            }
+            TriangulationError::Folded => PolygonError::Folded,
+        }
+    }
+}
+
 /// Triangulates the polygon whose corners are `corners` (indices into `positions`, in boundary
 /// order) and appends `corners.len() - 2` triangles with the polygon's winding to `out`.
 ///
@@ -70,22 +95,12 @@ pub fn triangulate_polygon(
             Ok(())
         }
         [a, b, c, d] => triangulate_quad(&points, [a, b, c, d], out),
-        _ => triangulate_general(&points, corners, out),
+        _ => {
+            let triangles = triangulate::triangulate_polygon(&points)?;
+            out.extend(triangles.iter().map(|t| t.map(|i| corners[i as usize])));
+            Ok(())
+        }
     }
-}
-
-/// Twice the vector area of a closed polygon: its normal, pointing to the side from which the
-/// polygon is seen counter-clockwise, with a length of twice its area (the Newell normal).
-pub fn newell_normal(points: &[DVec3]) -> DVec3 {
-    let Some(&origin) = points.first() else {
-        return DVec3::ZERO;
-    };
-    let next = points.iter().skip(1).chain(points.first());
-    points
-        .iter()
-        .zip(next)
-        .map(|(&p, &q)| (p - origin).cross(q - origin))
-        .sum()
 }
 
 fn corner_positions(positions: &[DVec3], corners: &[u32]) -> Result<Vec<DVec3>, PolygonError> {
@@ -139,6 +154,8 @@ fn coincident_corners(points: &[DVec3]) -> Option<(usize, usize)> {
     })
 }
 
+/// The quad split along the shorter diagonal if both halves face like the quad, else along the
+/// other one if they do; otherwise the quad is self-intersecting.
 fn triangulate_quad(
     points: &[DVec3],
     corners: [u32; 4],
@@ -163,150 +180,10 @@ fn triangulate_quad(
     Ok(())
 }
 
-type Cdt = ConstrainedDelaunayTriangulation<Point2<f64>>;
-
-fn triangulate_general(
-    points: &[DVec3],
-    corners: &[u32],
-    out: &mut Vec<[u32; 3]>,
-) -> Result<(), PolygonError> {
-    let flat = project_to_plane(points)?;
-    let mut cdt = Cdt::new();
-    let handles = insert_corners(&mut cdt, &flat)?;
-    add_boundary(&mut cdt, &handles)?;
-    let triangles = inside_triangles(&cdt, &handles)?;
-    if triangles.len() != corners.len() - 2 {
-        return Err(PolygonError::SelfIntersecting);
-    }
-    // The 2D triangles are all counter-clockwise; in 3D a strongly non-planar face can still
-    // fold a triangle backwards.
-    let normal = newell_normal(points);
-    if !triangles.iter().all(|t| facing(points, t, normal)) {
-        return Err(PolygonError::Folded);
-    }
-    out.extend(triangles.iter().map(|t| t.map(|i| corners[i])));
-    Ok(())
-}
-
 /// Whether the triangle of corners `t` faces the same way as `normal`.
 fn facing(points: &[DVec3], t: &[usize; 3], normal: DVec3) -> bool {
     let [a, b, c] = t.map(|i| points[i]);
     (b - a).cross(c - a).dot(normal) > 0.0
-}
-
-/// 2D coordinates in the plane of the polygon, scaled to about `[-1, 1]`, in a frame whose
-/// counter-clockwise direction is the polygon's: the boundary is counter-clockwise in 2D.
-fn project_to_plane(points: &[DVec3]) -> Result<Vec<Point2<f64>>, PolygonError> {
-    let normal = unit_normal(points)?;
-    let u = normal.any_orthonormal_vector();
-    let v = normal.cross(u);
-    let center = points.iter().sum::<DVec3>() / points.len() as f64;
-    let scale = extent(points);
-    Ok(points
-        .iter()
-        .map(|&p| {
-            let d = (p - center) / scale;
-            spade::mitigate_underflow(Point2::new(d.dot(u), d.dot(v)))
-        })
-        .collect())
-}
-
-/// Inserts the corners; two corners at the same 2D point are an error.
-fn insert_corners(
-    cdt: &mut Cdt,
-    flat: &[Point2<f64>],
-) -> Result<Vec<FixedVertexHandle>, PolygonError> {
-    let mut handles: Vec<FixedVertexHandle> = Vec::with_capacity(flat.len());
-    for (corner, &point) in flat.iter().enumerate() {
-        let before = cdt.num_vertices();
-        let handle = cdt.insert(point).map_err(|_| PolygonError::Degenerate)?;
-        if cdt.num_vertices() == before {
-            // An existing vertex was returned: the point is already there.
-            let earlier = handles.iter().position(|&h| h == handle).unwrap_or(corner);
-            return Err(PolygonError::CoincidentCorners {
-                first: earlier + 1,
-                second: corner + 1,
-            });
-        }
-        handles.push(handle);
-    }
-    Ok(handles)
-}
-
-/// Adds every boundary edge as a constraint; an edge that crosses an earlier one or passes
-/// through a corner makes the polygon self-intersecting.
-fn add_boundary(cdt: &mut Cdt, handles: &[FixedVertexHandle]) -> Result<(), PolygonError> {
-    for (&from, &to) in handles.iter().zip(handles.iter().cycle().skip(1)) {
-        if !cdt.can_add_constraint(from, to) {
-            return Err(PolygonError::SelfIntersecting);
-        }
-        let added = cdt.try_add_constraint(from, to);
-        if added.len() != 1 || !cdt.exists_constraint(from, to) {
-            return Err(PolygonError::SelfIntersecting);
-        }
-    }
-    Ok(())
-}
-
-/// Marks (by face index) the triangles inside the boundary: flood fill from the left side of
-/// each boundary edge without crossing a constraint edge. Reaching the outer face means the
-/// boundary does not enclose a region consistently.
-fn faces_inside(cdt: &Cdt, handles: &[FixedVertexHandle]) -> Result<Vec<bool>, PolygonError> {
-    let mut inside = vec![false; cdt.num_all_faces()];
-    let mut stack: Vec<FixedFaceHandle<InnerTag>> = Vec::new();
-    for (&from, &to) in handles.iter().zip(handles.iter().cycle().skip(1)) {
-        let edge = cdt
-            .get_edge_from_neighbors(from, to)
-            .ok_or(PolygonError::SelfIntersecting)?;
-        let face = edge
-            .face()
-            .as_inner()
-            .ok_or(PolygonError::SelfIntersecting)?;
-        stack.push(face.fix());
-    }
-    while let Some(face) = stack.pop() {
-        let seen = inside
-            .get_mut(face.index())
-            .ok_or(PolygonError::SelfIntersecting)?;
-        if std::mem::replace(seen, true) {
-            continue;
-        }
-        for edge in cdt.face(face).adjacent_edges() {
-            if edge.is_constraint_edge() {
-                continue;
-            }
-            let beyond = edge.rev().face().as_inner();
-            stack.push(beyond.ok_or(PolygonError::SelfIntersecting)?.fix());
-        }
-    }
-    Ok(inside)
-}
-
-/// The triangles inside the boundary, as corner positions along the face (counter-clockwise).
-fn inside_triangles(
-    cdt: &Cdt,
-    handles: &[FixedVertexHandle],
-) -> Result<Vec<[usize; 3]>, PolygonError> {
-    let inside = faces_inside(cdt, handles)?;
-    let mut corner_of = vec![usize::MAX; cdt.num_vertices()];
-    for (corner, handle) in handles.iter().enumerate() {
-        if let Some(slot) = corner_of.get_mut(handle.index()) {
-            *slot = corner;
-        }
-    }
-    let corner = |v: FixedVertexHandle| {
-        corner_of
-            .get(v.index())
-            .copied()
-            .filter(|&c| c < handles.len())
-    };
-    cdt.inner_faces()
-        .filter(|face| inside.get(face.fix().index()) == Some(&true))
-        .map(|face| match face.vertices().map(|v| corner(v.fix())) {
-            [Some(a), Some(b), Some(c)] => Ok([a, b, c]),
-            _ => Err(PolygonError::SelfIntersecting),
-        })
-        .collect()
 }
 
 #[cfg(test)]

@@ -15,7 +15,8 @@
 use super::super::{PrimitiveError, Shape, lipschitz_interval};
 use super::resolver::MeshResolver;
 use super::tree::MeshTree;
-use crate::polyhedra::{Polyhedron, PolyhedronError, Prism, triangulate_face};
+use crate::polyhedra::{Polyhedron, PolyhedronError, Prism};
+use crate::triangulate::triangulate_face;
 use crate::{Aabb, IndexedMesh, Interval};
 use glam::DVec3;
 use std::sync::Arc;
