@@ -13,9 +13,6 @@ use crate::marching_cubes::{GridSpec, edge_vertex, inside};
 use glam::Vec3;
 use solidkit_kernel::program::BatchScratch;
 
-/// Largest brick size: local sample coordinates `0..=MAX_BRICK` fit in 4 bits each.
-pub(crate) const MAX_BRICK: usize = 8;
-
 /// Number of distinct local edge ids (14 bits).
 pub(crate) const LOCAL_EDGE_IDS: usize = 1 << 14;
 

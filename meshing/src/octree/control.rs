@@ -1,6 +1,9 @@
 //! Options and controls of sparse meshing: brick size, cancellation, progress, statistics.
 
 use std::sync::Arc;
+
+/// Largest brick size: local sample coordinates `0..=MAX_BRICK` fit in 4 bits each.
+pub(crate) const MAX_BRICK: usize = 8;
 use std::sync::atomic::{AtomicBool, Ordering};
 
 /// A cancellation flag shared between the caller and a running mesher.
@@ -81,9 +84,7 @@ impl SparseOptions {
 
     /// The brick size in cells (a power of two).
     pub(crate) fn brick_size(&self) -> usize {
-        self.brick_cells
-            .clamp(1, super::brick::MAX_BRICK)
-            .next_power_of_two()
+        self.brick_cells.clamp(1, MAX_BRICK).next_power_of_two()
     }
 
     pub(crate) fn report(&self, p: Progress) {
