@@ -7,12 +7,14 @@
 //! subtrahends. Registers are allocated by liveness so batch evaluation touches few buffers.
 //!
 //! Evaluators: [`batch`] (f32, structure of arrays, chunks of [`CHUNK`] points, loops written for
-//! auto-vectorisation), [`scalar`] (f64 value and gradient at one point), and [`interval`] (f64
+//! auto-vectorisation), [`gradients`] (f64 values and gradients over slices of points), [`scalar`]
+//! (f64 value and gradient at one point), and [`interval`] (f64
 //! interval over a box, recording which operand of each min/max can win so a box gets a shorter
 //! program valid inside it).
 
 pub mod batch;
 mod frame;
+pub mod gradients;
 pub mod interval;
 mod lower;
 mod regalloc;
@@ -20,6 +22,7 @@ pub mod scalar;
 
 pub use batch::{BatchScratch, CHUNK};
 pub use frame::Frame;
+pub use gradients::GradientScratch;
 pub use interval::{Choice, IntervalScratch, Pruned};
 
 use crate::primitive::Primitive;

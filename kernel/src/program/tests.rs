@@ -322,3 +322,23 @@ fn blend_gradients_intervals_and_pruning_agree() {
         }
     }
 }
+
+#[test]
+fn batch_gradients_agree_with_scalar_ones() {
+    for tree in [sample_tree(), blend_tree()] {
+        let p = tree.compile();
+        let pts = grid_points(11, 1.4);
+        assert!(pts.len() > 3 * CHUNK);
+        let (mut v, mut g) = (vec![0.0; pts.len()], vec![DVec3::ZERO; pts.len()]);
+        p.values_gradients(&pts, &mut v, &mut g, &mut super::GradientScratch::default());
+        for (k, q) in pts.iter().enumerate() {
+            let (sv, sg) = p.value_gradient_with(*q, &mut Vec::new());
+            assert_eq!(v[k], sv, "value at {q}");
+            assert!(
+                (g[k] - sg).length() < 1e-12,
+                "gradient at {q}: {} vs {sg}",
+                g[k]
+            );
+        }
+    }
+}
