@@ -22,6 +22,8 @@ pub enum Command {
     /// Read a mesh (STL, OBJ, PLY, OFF) and print its topology report; exit 1 unless it is a
     /// closed oriented 2-manifold.
     Check(CheckArgs),
+    /// Write the JSON tree of any input (.json, .rhai, .csg).
+    Convert(ConvertArgs),
     /// Benchmark meshing of the standard models and print a table (time, rate, peak memory and
     /// the check of each mesh); exit 1 if a mesh fails its check.
     Bench(BenchArgs),
@@ -40,7 +42,7 @@ pub enum Method {
 /// Arguments of `solidkit mesh`.
 #[derive(Debug, clap::Args)]
 pub struct MeshArgs {
-    /// The solid: a JSON tree (.json).
+    /// The solid: a JSON tree (.json) or a Rhai script (.rhai).
     pub input: PathBuf,
     /// Write the mesh here; the format follows the extension (.stl .obj .ply .off).
     #[arg(short, long)]
@@ -58,6 +60,28 @@ pub struct MeshArgs {
     /// Print the report as JSON.
     #[arg(long)]
     pub json: bool,
+    /// How round primitives of OpenSCAD `.csg` inputs are built: exact (true spheres, cylinders)
+    /// or faceted exactly as OpenSCAD does.
+    #[arg(long, value_enum, default_value_t = FacetsArg::Exact)]
+    pub facets: FacetsArg,
+}
+
+/// `--facets`: round primitives of `.csg` inputs.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum FacetsArg {
+    /// True spheres, cylinders, cones and discs.
+    Exact,
+    /// OpenSCAD's polyhedra ($fn/$fa/$fs fragment rule).
+    Openscad,
+}
+
+impl From<FacetsArg> for crate::frontends::csg::Facets {
+    fn from(f: FacetsArg) -> Self {
+        match f {
+            FacetsArg::Exact => Self::Exact,
+            FacetsArg::Openscad => Self::OpenScad,
+        }
+    }
 }
 
 /// Arguments of `solidkit check`.
@@ -68,6 +92,16 @@ pub struct CheckArgs {
     /// Print the report as JSON.
     #[arg(long)]
     pub json: bool,
+}
+
+/// Arguments of `solidkit convert`.
+#[derive(Debug, clap::Args)]
+pub struct ConvertArgs {
+    /// The solid: a JSON tree (.json), a Rhai script (.rhai) or an OpenSCAD .csg file.
+    pub input: PathBuf,
+    /// Write the JSON tree here (replaced atomically).
+    #[arg(short, long)]
+    pub output: PathBuf,
 }
 
 /// Arguments of `solidkit bench`.

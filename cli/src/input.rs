@@ -4,18 +4,30 @@ use anyhow::{Context, Result, bail};
 use solidkit_kernel::{Solid, json};
 use solidkit_meshing::io::FileMeshResolver;
 use std::path::Path;
+use std::sync::Arc;
 
-/// Reads and validates the solid in `path`.
+pub use crate::frontends::csg::Facets;
+
+/// Reads and validates the solid in `path` (round `.csg` primitives exact).
 pub fn load_solid(path: &Path) -> Result<Solid> {
+    load_solid_with(path, Facets::Exact)
+}
+
+/// Reads and validates the solid in `path`; `facets` says how `.csg` round primitives are built.
+pub fn load_solid_with(path: &Path, facets: Facets) -> Result<Solid> {
     let name = path.display();
     let ext = path
         .extension()
         .and_then(|e| e.to_str())
         .map(str::to_ascii_lowercase);
     match ext.as_deref() {
-        Some("json") => {}
-        Some(other) => bail!("{name}: unsupported input format '.{other}' (expected a .json tree)"),
-        None => bail!("{name}: no file extension (expected a .json tree)"),
+        Some("json" | "rhai" | "csg") => {}
+        Some(other) => bail!(
+            "{name}: unsupported input format '.{other}' (expected a .json tree, a .rhai script or a .csg file)"
+        ),
+        None => bail!(
+            "{name}: no file extension (expected a .json tree, a .rhai script or a .csg file)"
+        ),
     }
     let bytes = std::fs::read(path).with_context(|| format!("{name}"))?;
     let text = match String::from_utf8(bytes) {
@@ -27,7 +39,12 @@ pub fn load_solid(path: &Path) -> Result<Solid> {
     };
     // `mesh` nodes name their files relative to the tree file's folder.
     let resolver = FileMeshResolver::for_tree_file(path);
-    let solid = json::from_str_with(&text, &resolver).map_err(|e| anyhow::anyhow!("{name}:{e}"))?;
+    let solid = match ext.as_deref() {
+        Some("rhai") => crate::frontends::rhai::eval(&text, &name.to_string(), Arc::new(resolver))?,
+        Some("csg") => crate::frontends::csg::import(&text, facets)
+            .map_err(|e| anyhow::anyhow!("{name}:{e}"))?,
+        _ => json::from_str_with(&text, &resolver).map_err(|e| anyhow::anyhow!("{name}:{e}"))?,
+    };
     solid
         .validate()
         .map_err(|e| anyhow::anyhow!("{name}: {e}"))?;

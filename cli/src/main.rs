@@ -5,6 +5,7 @@
 
 mod args;
 mod commands;
+mod frontends;
 mod input;
 mod report;
 

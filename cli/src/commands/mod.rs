@@ -2,6 +2,7 @@
 
 mod bench;
 mod check;
+mod convert;
 mod mesh;
 
 use crate::args::Command;
@@ -12,6 +13,7 @@ pub fn run(command: Command) -> Result<u8> {
     match command {
         Command::Mesh(a) => mesh::run(&a),
         Command::Check(a) => check::run(&a),
+        Command::Convert(a) => convert::run(&a),
         Command::Bench(a) => bench::run(&a),
         Command::BenchCase(a) => bench::run_case(&a),
     }

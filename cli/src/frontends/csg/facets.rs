@@ -1,0 +1,112 @@
+//! OpenSCAD's faceting of round primitives (as in its `primitives.cc`, 2021.01): the fragment
+//! rule, circles as regular n-gons, spheres as stacked rings, cylinders and cones as two n-gons.
+
+use super::args::Resolution;
+use glam::{DVec2, DVec3};
+
+/// OpenSCAD's `GRID_FINE`: radii below it get 3 fragments.
+const GRID_FINE: f64 = 0.000_000_953_674_316_406_25;
+
+/// The number of fragments OpenSCAD uses for a circle of radius `r`.
+pub fn fragments(r: f64, res: Resolution) -> usize {
+    if r < GRID_FINE {
+        3
+    } else if res.fn_ > 0.0 {
+        res.fn_.max(3.0) as usize
+    } else {
+        (360.0 / res.fa)
+            .min(r * 2.0 * std::f64::consts::PI / res.fs)
+            .max(5.0)
+            .ceil() as usize
+    }
+}
+
+/// `sin` of degrees, exact at multiples of 90° like OpenSCAD's `sin_degrees`.
+fn sin_degrees(x: f64) -> f64 {
+    let x = x.rem_euclid(360.0);
+    if x.rem_euclid(90.0) == 0.0 {
+        [0.0, 1.0, 0.0, -1.0][(x / 90.0) as usize % 4]
+    } else {
+        x.to_radians().sin()
+    }
+}
+
+/// `cos` of degrees, exact at multiples of 90°.
+fn cos_degrees(x: f64) -> f64 {
+    sin_degrees(x + 90.0)
+}
+
+/// The `n` corners of OpenSCAD's circle of radius `r`: angles `360·i/n`, counter-clockwise.
+pub fn circle(r: f64, n: usize) -> Vec<DVec2> {
+    (0..n)
+        .map(|i| {
+            let phi = 360.0 * i as f64 / n as f64;
+            DVec2::new(r * cos_degrees(phi), r * sin_degrees(phi))
+        })
+        .collect()
+}
+
+/// OpenSCAD's sphere: `n` fragments around, `(n + 1) / 2` rings at polar angles
+/// `180·(i + ½)/rings`, the first at the top; faces counter-clockwise seen from outside.
+pub fn sphere(r: f64, res: Resolution) -> (Vec<DVec3>, Vec<Vec<u32>>) {
+    let n = fragments(r, res);
+    let rings = n.div_ceil(2).max(1);
+    let mut vertices = Vec::with_capacity(n * rings);
+    for i in 0..rings {
+        let phi = 180.0 * (i as f64 + 0.5) / rings as f64;
+        let (ring_r, z) = (r * sin_degrees(phi), r * cos_degrees(phi));
+        vertices.extend(circle(ring_r, n).into_iter().map(|p| p.extend(z)));
+    }
+    let at = |ring: usize, k: usize| (ring * n + k % n) as u32;
+    // Top cap, seen from above: counter-clockwise.
+    let mut faces = vec![(0..n).map(|k| at(0, k)).collect::<Vec<_>>()];
+    for i in 0..rings - 1 {
+        for k in 0..n {
+            faces.push(vec![at(i, k), at(i + 1, k), at(i + 1, k + 1), at(i, k + 1)]);
+        }
+    }
+    faces.push((0..n).rev().map(|k| at(rings - 1, k)).collect());
+    (vertices, faces)
+}
+
+/// OpenSCAD's cylinder or cone from radius `r1` at `z1` to `r2` at `z2` (`z1 < z2`), with the
+/// fragments of the larger radius; a zero radius becomes one apex vertex.
+pub fn cylinder(
+    r1: f64,
+    r2: f64,
+    z1: f64,
+    z2: f64,
+    res: Resolution,
+) -> (Vec<DVec3>, Vec<Vec<u32>>) {
+    let n = fragments(r1.max(r2), res);
+    let mut vertices = Vec::new();
+    let mut ring = |r: f64, z: f64| -> Vec<u32> {
+        let start = vertices.len() as u32;
+        if r > 0.0 {
+            vertices.extend(circle(r, n).into_iter().map(|p| p.extend(z)));
+            (0..n as u32).map(|k| start + k).collect()
+        } else {
+            vertices.push(DVec3::new(0.0, 0.0, z));
+            vec![start; n]
+        }
+    };
+    let bottom = ring(r1, z1);
+    let top = ring(r2, z2);
+    let mut faces = Vec::new();
+    for k in 0..n {
+        let j = (k + 1) % n;
+        let mut quad = vec![bottom[k], bottom[j], top[j], top[k]];
+        quad.dedup();
+        if quad.first() == quad.last() {
+            quad.pop();
+        }
+        faces.push(quad);
+    }
+    if r1 > 0.0 {
+        faces.push(bottom.iter().rev().copied().collect());
+    }
+    if r2 > 0.0 {
+        faces.push(top);
+    }
+    (vertices, faces)
+}

@@ -1,0 +1,172 @@
+//! Tests of the `.csg` importer: fixtures mesh closed with the expected genus and volume,
+//! `.csg` and JSON give the same tree, located errors, deep nesting, OpenSCAD faceting.
+
+use super::error::Pos;
+use super::{CsgError, Facets, import};
+use solidkit_kernel::Solid;
+use solidkit_kernel::polyhedra::Polyhedron;
+use solidkit_kernel::primitive::sweep::signed_volume;
+use solidkit_tests::{fixture, mesh, rel_err};
+use std::f64::consts::PI;
+
+fn load(name: &str, facets: Facets) -> Solid {
+    let text = std::fs::read_to_string(fixture(&format!("csg/{name}"))).expect("fixture");
+    let s = import(&text, facets).unwrap_or_else(|e| panic!("{name}: {e}"));
+    s.validate().unwrap_or_else(|e| panic!("{name}: {e}"));
+    s
+}
+
+fn check(name: &str, genus: i64, volume: f64, tolerance: f64) {
+    let solid = load(name, Facets::Exact);
+    let (m, report) = mesh(&solid, 160);
+    assert_eq!(report.boundary_edges, 0, "{name}: {report:?}");
+    assert_eq!(report.non_manifold_edges, 0, "{name}");
+    assert_eq!(report.shells, 1, "{name}");
+    assert_eq!(report.genus, Some(genus), "{name}");
+    let v = signed_volume(&m);
+    assert!(
+        rel_err(v, volume) < tolerance,
+        "{name}: volume {v} vs {volume}"
+    );
+}
+
+#[test]
+fn box_with_two_holes() {
+    check("box_holes.csg", 2, 4000.0 - 2.0 * PI * 9.0 * 10.0, 0.01);
+}
+
+#[test]
+fn rotate_extrude_ring() {
+    check("ring.csg", 1, 2.0 * PI * PI * 5.0 * 4.0, 0.01);
+}
+
+#[test]
+fn linear_extrude_with_twist() {
+    check("twist.csg", 0, 160.0, 0.01);
+}
+
+#[test]
+fn polygon_with_hole() {
+    check("polygon_hole.csg", 1, 420.0, 0.01);
+}
+
+#[test]
+fn polyhedron_pyramid() {
+    check("polyhedron.csg", 0, 200.0, 0.01);
+}
+
+#[test]
+fn nested_multmatrix_sphere() {
+    check("nested.csg", 0, 4.0 / 3.0 * PI * 216.0, 0.01);
+}
+
+#[test]
+fn hull_of_two_boxes() {
+    // The sides run from the big box's top edges (z = 0.5) to the small box's top (z = 9).
+    check("hull.csg", 0, 100.0 + 8.5 / 3.0 * 124.0, 0.01);
+}
+
+#[test]
+fn csg_equals_json_tree() {
+    let csg = load("box_holes.csg", Facets::Exact);
+    let json = r#"{"format": "solidkit-tree", "version": 1, "root": {"type": "difference", "children": [
+        {"type": "translate", "offset": [10, 10, 5], "child": {"type": "box", "size": [20, 20, 10]}},
+        {"type": "affine", "matrix": [[1, 0, 0, 5], [0, 1, 0, 10], [0, 0, 1, -1]],
+         "child": {"type": "translate", "offset": [0, 0, 6], "child": {"type": "cylinder", "radius": 3, "height": 12}}},
+        {"type": "affine", "matrix": [[1, 0, 0, 15], [0, 1, 0, 10], [0, 0, 1, -1]],
+         "child": {"type": "translate", "offset": [0, 0, 6], "child": {"type": "cylinder", "radius": 3, "height": 12}}}]}}"#;
+    let tree = solidkit_kernel::json::from_str(json).expect("json");
+    assert_eq!(csg, tree);
+}
+
+#[test]
+fn unsupported_construct_is_located() {
+    let text = std::fs::read_to_string(fixture("csg/minkowski.csg")).unwrap();
+    let e = import(&text, Facets::Exact).unwrap_err();
+    assert_eq!(
+        e,
+        CsgError::Unsupported {
+            pos: Pos { line: 4, col: 2 },
+            name: "minkowski".into()
+        }
+    );
+    assert_eq!(
+        e.to_string(),
+        "4:2: unsupported OpenSCAD construct 'minkowski'"
+    );
+}
+
+#[test]
+fn syntax_errors_are_located() {
+    for (text, line, col) in [
+        ("cube(size = [1, 2, 3]", 1, 22),
+        ("group() {\n  cube(1);\n", 3, 1),
+        ("group() {\n  cube(size = [1, 2 3]);\n}", 2, 21),
+        ("}", 1, 1),
+        ("cube(size = @);", 1, 13),
+        ("/* open", 1, 1),
+    ] {
+        match import(text, Facets::Exact) {
+            Err(CsgError::Syntax { pos, .. }) => assert_eq!(pos, Pos { line, col }, "{text:?}"),
+            other => panic!("{text:?}: {other:?}"),
+        }
+    }
+}
+
+#[test]
+fn deep_nesting_does_not_overflow() {
+    let n = 100_000;
+    let mut text = "group() {\n".repeat(n);
+    text.push_str("cube(size = 1, center = true);\n");
+    text.push_str(&"}\n".repeat(n));
+    let s = import(&text, Facets::Exact).expect("deep");
+    assert_eq!(s, Solid::cube(1.0));
+    let mut text = "multmatrix([[1,0,0,1],[0,1,0,0],[0,0,1,0],[0,0,0,1]]) ".repeat(n);
+    text.push_str("cube(size = 1, center = true);");
+    let s = import(&text, Facets::Exact).expect("deep transforms");
+    assert_eq!(s.depth(), n + 1);
+}
+
+#[test]
+fn openscad_facets_counts() {
+    use super::args::Resolution;
+    use super::facets::{fragments, sphere};
+    let d = Resolution {
+        fn_: 0.0,
+        fa: 12.0,
+        fs: 2.0,
+    };
+    assert_eq!(fragments(1.0, d), 5);
+    assert_eq!(fragments(10.0, d), 30);
+    assert_eq!(fragments(1e-7, d), 3);
+    assert_eq!(fragments(5.0, Resolution { fn_: 7.0, ..d }), 7);
+    let (v, f) = sphere(1.0, Resolution { fn_: 8.0, ..d });
+    assert_eq!(v.len(), 8 * 4);
+    assert_eq!(f.len(), 8 * 3 + 2);
+    let s = load("nested.csg", Facets::OpenScad);
+    let (m, report) = mesh(&s, 120);
+    assert_eq!(report.genus, Some(0));
+    // The sphere of radius 3 (scaled by 2) has 10 fragments and 5 rings.
+    let (v, f) = sphere(3.0, d);
+    assert_eq!((v.len(), f.len()), (50, 42));
+    let exact = Polyhedron::new(v, f).expect("closed").volume() * 8.0;
+    let measured = signed_volume(&m);
+    assert!(rel_err(measured, exact) < 0.01, "{measured} vs {exact}");
+}
+
+#[test]
+fn named_positional_and_values() {
+    let a = import("cube([1, 2, 3], true); // c", Facets::Exact).unwrap();
+    let b = import("cube(center = true, size = [1, 2, 3]);", Facets::Exact).unwrap();
+    assert_eq!(a, b);
+    let c = import(
+        "sphere(r = 2, $fn = undef, s = \"x\\\"y\", f = false, n = -1e-1);",
+        Facets::Exact,
+    )
+    .unwrap();
+    assert_eq!(c, Solid::sphere(2.0));
+    assert!(matches!(
+        import("group();", Facets::Exact),
+        Err(CsgError::Empty)
+    ));
+}

@@ -1,0 +1,143 @@
+//! Rhai scripts (`.rhai`) as a front end: every primitive, operation and transform of the kernel as
+//! functions and methods, run in a sandbox (no `import` or `eval`, limits on operations, call
+//! depth, expression depth, sizes, wall-clock time and tree size).
+//!
+//! The script's value is the solid passed to its last `export(solid)` call, or else the value of
+//! its last expression.
+
+mod api;
+mod error;
+mod node;
+mod shape;
+#[cfg(test)]
+mod tests;
+
+pub use error::ScriptError;
+pub use shape::Shape;
+
+use ::rhai::packages::{Package, StandardPackage};
+use ::rhai::{Dynamic, Engine, Scope};
+use solidkit_kernel::Solid;
+use solidkit_kernel::json::MeshResolver;
+use std::sync::{Arc, Mutex};
+use std::time::{Duration, Instant};
+
+/// The limits of the sandbox.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Limits {
+    /// Most operations (Rhai's count of evaluation steps) a script may take.
+    pub max_operations: u64,
+    /// Wall-clock time a script may run.
+    pub max_time: Duration,
+    /// Deepest nesting of function calls.
+    pub max_call_levels: usize,
+    /// Deepest nesting of expressions (at top level and in functions).
+    pub max_expr_depth: usize,
+    /// Longest string, in bytes.
+    pub max_string_size: usize,
+    /// Most elements of an array.
+    pub max_array_size: usize,
+    /// Most entries of a map.
+    pub max_map_size: usize,
+    /// Most nodes of a solid built by the script (a shared subtree counts once per use).
+    pub max_nodes: u64,
+}
+
+impl Default for Limits {
+    fn default() -> Self {
+        Limits {
+            max_operations: 20_000_000,
+            max_time: Duration::from_millis(1500),
+            max_call_levels: 64,
+            max_expr_depth: 64,
+            max_string_size: 1 << 20,
+            max_array_size: 100_000,
+            max_map_size: 10_000,
+            max_nodes: 1_000_000,
+        }
+    }
+}
+
+/// Stack of the thread that runs a script: deep (but limited) Rhai recursion must not overflow.
+const STACK_SIZE: usize = 64 << 20;
+
+/// Runs the script `source` (named `file` in errors) with the default [`Limits`]; `mesh` nodes
+/// load their files through `resolver`.
+pub fn eval(
+    source: &str,
+    file: &str,
+    resolver: Arc<dyn MeshResolver + Send + Sync>,
+) -> Result<Solid, ScriptError> {
+    eval_with(source, file, resolver, Limits::default())
+}
+
+/// Runs the script `source` like [`eval`], with the given limits.
+pub fn eval_with(
+    source: &str,
+    file: &str,
+    resolver: Arc<dyn MeshResolver + Send + Sync>,
+    limits: Limits,
+) -> Result<Solid, ScriptError> {
+    std::thread::scope(|s| {
+        std::thread::Builder::new()
+            .name("rhai".into())
+            .stack_size(STACK_SIZE)
+            .spawn_scoped(s, || run(source, file, resolver, limits))
+            .map_err(|e| ScriptError::plain(file, format!("cannot start the script thread: {e}")))?
+            .join()
+            .unwrap_or_else(|_| Err(ScriptError::plain(file, "the script runner panicked")))
+    })
+}
+
+fn run(
+    source: &str,
+    file: &str,
+    resolver: Arc<dyn MeshResolver + Send + Sync>,
+    limits: Limits,
+) -> Result<Solid, ScriptError> {
+    let exported = Arc::new(Mutex::new(None::<Shape>));
+    let engine = engine(&limits, resolver, exported.clone());
+    let ast = engine
+        .compile(source)
+        .map_err(|e| error::from_parse(source, file, &e, &limits))?;
+    let value: Dynamic = engine
+        .eval_ast_with_scope(&mut Scope::new(), &ast)
+        .map_err(|e| error::from_eval(source, file, &e, &limits))?;
+    let last = exported.lock().ok().and_then(|mut e| e.take());
+    match last {
+        Some(shape) => Ok(shape.solid),
+        None => match value.try_cast::<Shape>() {
+            Some(shape) => Ok(shape.solid),
+            None => Err(ScriptError::plain(
+                file,
+                "the script made no solid: end it with a solid expression or call export(solid)",
+            )),
+        },
+    }
+}
+
+/// The sandboxed engine: standard packages, our API, no `eval`, no modules, all limits set.
+fn engine(
+    limits: &Limits,
+    resolver: Arc<dyn MeshResolver + Send + Sync>,
+    exported: Arc<Mutex<Option<Shape>>>,
+) -> Engine {
+    let mut engine = Engine::new_raw();
+    engine.register_global_module(StandardPackage::new().as_shared_module());
+    engine.disable_symbol("eval");
+    engine.set_max_operations(limits.max_operations);
+    engine.set_max_call_levels(limits.max_call_levels);
+    engine.set_max_expr_depths(limits.max_expr_depth, limits.max_expr_depth);
+    engine.set_max_string_size(limits.max_string_size);
+    engine.set_max_array_size(limits.max_array_size);
+    engine.set_max_map_size(limits.max_map_size);
+    let start = Instant::now();
+    let max_time = limits.max_time;
+    engine.on_progress(move |ops| {
+        (ops % 1024 == 0 && start.elapsed() > max_time).then(|| Dynamic::from(error::TIMEOUT))
+    });
+    engine.on_print(|s| eprintln!("{s}"));
+    engine.on_debug(|s, _, pos| eprintln!("{pos:?}: {s}"));
+    api::register(&mut engine, limits.max_nodes, resolver, exported);
+    engine
+}

@@ -1,0 +1,276 @@
+//! Scripts against the equivalent JSON trees, and hostile scripts against the sandbox.
+
+use super::{ScriptError, eval};
+use serde_json::Value;
+use solidkit_kernel::Solid;
+use solidkit_kernel::json::{self, NoMeshResolver};
+use solidkit_meshing::io::FileMeshResolver;
+use std::path::Path;
+use std::sync::Arc;
+use std::time::{Duration, Instant};
+
+fn run(script: &str) -> Result<Solid, ScriptError> {
+    eval(script, "test.rhai", Arc::new(NoMeshResolver))
+}
+
+fn solid(script: &str) -> Solid {
+    run(script).unwrap_or_else(|e| panic!("{script}: {e}"))
+}
+
+fn tree(text: &str) -> Solid {
+    json::from_str(text).unwrap_or_else(|e| panic!("{text}: {e}"))
+}
+
+#[test]
+fn primitives_operations_and_transforms_match_json() {
+    let cases = [
+        ("sphere(1)", r#"{"type": "sphere", "radius": 1}"#),
+        ("sphere(0.5)", r#"{"type": "sphere", "radius": 0.5}"#),
+        ("cube(2)", r#"{"type": "box", "size": 2}"#),
+        (
+            "box([1, 2.5, 3])",
+            r#"{"type": "box", "size": [1, 2.5, 3]}"#,
+        ),
+        (
+            "cylinder(1, 2)",
+            r#"{"type": "cylinder", "radius": 1, "height": 2}"#,
+        ),
+        (
+            "cone(1, 0.5, 2)",
+            r#"{"type": "cone", "bottom_radius": 1, "top_radius": 0.5, "height": 2}"#,
+        ),
+        (
+            "torus(2, 0.5)",
+            r#"{"type": "torus", "major_radius": 2, "minor_radius": 0.5}"#,
+        ),
+        (
+            "plane([0, 0, 1], 0.5)",
+            r#"{"type": "plane", "normal": [0, 0, 1], "offset": 0.5}"#,
+        ),
+        ("gyroid(0.3)", r#"{"type": "gyroid", "thickness": 0.3}"#),
+        (
+            "sphere(1) | cube(1)",
+            r#"{"type": "union", "children": [{"type": "sphere", "radius": 1}, {"type": "box", "size": 1}]}"#,
+        ),
+        (
+            "sphere(1) & cube(1)",
+            r#"{"type": "intersection", "children": [{"type": "sphere", "radius": 1}, {"type": "box", "size": 1}]}"#,
+        ),
+        (
+            "sphere(1) - cube(1)",
+            r#"{"type": "difference", "children": [{"type": "sphere", "radius": 1}, {"type": "box", "size": 1}]}"#,
+        ),
+        (
+            "union([sphere(1), cube(1), sphere(2)])",
+            r#"{"type": "union", "children": [{"type": "sphere", "radius": 1}, {"type": "box", "size": 1}, {"type": "sphere", "radius": 2}]}"#,
+        ),
+        (
+            "intersection([sphere(1), cube(1)])",
+            r#"{"type": "intersection", "children": [{"type": "sphere", "radius": 1}, {"type": "box", "size": 1}]}"#,
+        ),
+        (
+            "difference([sphere(1), cube(1), sphere(2)])",
+            r#"{"type": "difference", "children": [{"type": "sphere", "radius": 1}, {"type": "box", "size": 1}, {"type": "sphere", "radius": 2}]}"#,
+        ),
+        (
+            "sphere(1).translate([1, 2.0, 3])",
+            r#"{"type": "translate", "offset": [1, 2, 3], "child": {"type": "sphere", "radius": 1}}"#,
+        ),
+        (
+            "sphere(1).rotate([0, 0, 1], 45)",
+            r#"{"type": "rotate", "axis": [0, 0, 1], "degrees": 45, "child": {"type": "sphere", "radius": 1}}"#,
+        ),
+        (
+            "sphere(1).scale(2)",
+            r#"{"type": "scale", "factor": 2, "child": {"type": "sphere", "radius": 1}}"#,
+        ),
+        (
+            "sphere(1).scale([1, 2, 3])",
+            r#"{"type": "scale", "factor": [1, 2, 3], "child": {"type": "sphere", "radius": 1}}"#,
+        ),
+        (
+            "sphere(1).mirror([1, 0, 0])",
+            r#"{"type": "mirror", "normal": [1, 0, 0], "child": {"type": "sphere", "radius": 1}}"#,
+        ),
+        (
+            "sphere(1).affine([[1, 0, 0, 1], [0, 1, 0, 0], [0, 0, 1, 0]])",
+            r#"{"type": "affine", "matrix": [[1, 0, 0, 1], [0, 1, 0, 0], [0, 0, 1, 0]], "child": {"type": "sphere", "radius": 1}}"#,
+        ),
+        (
+            "sphere(1).offset(0.1)",
+            r#"{"type": "offset", "distance": 0.1, "child": {"type": "sphere", "radius": 1}}"#,
+        ),
+        (
+            "sphere(1).shell(0.1)",
+            r#"{"type": "shell", "thickness": 0.1, "child": {"type": "sphere", "radius": 1}}"#,
+        ),
+        (
+            "smooth_union(sphere(1), cube(1), 0.2)",
+            r#"{"type": "smooth_union", "radius": 0.2, "children": [{"type": "sphere", "radius": 1}, {"type": "box", "size": 1}]}"#,
+        ),
+        (
+            "smooth_intersection([sphere(1), cube(1)], 0.2)",
+            r#"{"type": "smooth_intersection", "radius": 0.2, "children": [{"type": "sphere", "radius": 1}, {"type": "box", "size": 1}]}"#,
+        ),
+        (
+            "smooth_difference(sphere(1), cube(1), 0.2)",
+            r#"{"type": "smooth_difference", "radius": 0.2, "children": [{"type": "sphere", "radius": 1}, {"type": "box", "size": 1}]}"#,
+        ),
+    ];
+    for (script, text) in cases {
+        assert_eq!(solid(script), tree(text), "{script}");
+    }
+}
+
+/// `json` as a Rhai expression (`#{"key": value}` maps, `()` for null).
+fn rhai_literal(v: &Value) -> String {
+    match v {
+        Value::Null => "()".into(),
+        Value::Bool(b) => b.to_string(),
+        Value::Number(n) => n.to_string(),
+        Value::String(s) => Value::String(s.clone()).to_string(),
+        Value::Array(a) => format!(
+            "[{}]",
+            a.iter().map(rhai_literal).collect::<Vec<_>>().join(", ")
+        ),
+        Value::Object(o) => format!(
+            "#{{{}}}",
+            o.iter()
+                .map(|(k, v)| format!("{}: {}", Value::String(k.clone()), rhai_literal(v)))
+                .collect::<Vec<_>>()
+                .join(", ")
+        ),
+    }
+}
+
+const FAMILY_SAMPLES: [&str; 14] = [
+    r#"{"type": "ellipsoid", "radii": [1.0, 0.7, 0.5]}"#,
+    r#"{"type": "elliptic_cylinder", "radii": [0.7, 0.4], "bounds": [[-1, -1, -1], [1, 1, 1]]}"#,
+    r#"{"type": "elliptic_cone", "radii": [0.9, 0.6], "bounds": [[-1, -1, -1], [1, 1, 1]]}"#,
+    r#"{"type": "elliptic_paraboloid", "radii": [0.8, 0.6], "bounds": [[-1, -1, -1], [1, 1, 1]]}"#,
+    r#"{"type": "hyperbolic_paraboloid", "radii": [0.8, 1.25], "bounds": [[-1, -1, -1], [1, 1, 1]]}"#,
+    r#"{"type": "hyperboloid_one_sheet", "radii": [0.5, 0.4, 0.5], "bounds": [[-2, -2, -2], [2, 2, 2]]}"#,
+    r#"{"type": "hyperboloid_two_sheets", "radii": [0.6, 0.5, 0.4], "bounds": [[-2, -2, -2], [2, 2, 2]]}"#,
+    r#"{"type": "blob", "threshold": 0.5, "balls": [{"center": [0, 0, 0], "strength": 1, "sharpness": 3}, {"center": [1, 0, 0], "strength": 1.5, "sharpness": 2}]}"#,
+    r#"{"type": "platonic", "solid": "icosahedron", "circumradius": 1}"#,
+    r#"{"type": "platonic", "solid": "cube", "edge": 1}"#,
+    r#"{"type": "polyhedron", "vertices": [[0, 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, 1]], "faces": [[0, 2, 1], [0, 1, 3], [0, 3, 2], [1, 2, 3]]}"#,
+    r#"{"type": "prism", "polygon": [[0, 0], [1, 0], [1, 1], [0, 1]], "holes": [[[0.2, 0.2], [0.4, 0.2], [0.4, 0.4]]], "direction": [0, 0, 1]}"#,
+    r#"{"type": "heightfield", "min": [0, 0], "max": [1, 1], "base": 0, "bezier": [[1, 2], [1, 3]]}"#,
+    r#"{"type": "heightfield", "min": [0, 0], "max": [1, 1], "base": -0.5, "samples": [[1, 2], [1, 1]]}"#,
+];
+
+/// Every family through `node(map)`: the samples above and the sweep and polyhedron fixtures.
+#[test]
+fn every_family_through_node_matches_json() {
+    let fixtures = Path::new(env!("CARGO_MANIFEST_DIR")).join("../fixtures");
+    let mut texts: Vec<(String, FileMeshResolver)> = FAMILY_SAMPLES
+        .iter()
+        .map(|t| (t.to_string(), FileMeshResolver::new(&fixtures)))
+        .collect();
+    for dir in ["sweeps", "polyhedra", "trees"] {
+        for entry in std::fs::read_dir(fixtures.join(dir)).expect("fixture folder") {
+            let path = entry.expect("entry").path();
+            if path.extension().is_some_and(|e| e == "json") {
+                let text = std::fs::read_to_string(&path).expect("fixture");
+                texts.push((text, FileMeshResolver::for_tree_file(&path)));
+            }
+        }
+    }
+    assert!(texts.len() > 25, "fixtures found: {}", texts.len());
+    for (text, resolver) in texts {
+        let v: Value = serde_json::from_str(&text).expect("JSON");
+        let root = v.get("root").unwrap_or(&v);
+        // Read back from serde_json's text so both sides see the same (serde-rounded) numbers.
+        let expected =
+            json::from_str_with(&root.to_string(), &resolver).unwrap_or_else(|e| panic!("{e}"));
+        let script = format!("node({})", rhai_literal(root));
+        let got = eval(&script, "t.rhai", Arc::new(resolver)).unwrap_or_else(|e| panic!("{e}"));
+        assert_eq!(got, expected, "{text}");
+    }
+}
+
+#[test]
+fn language_features_export_and_solids_inside_nodes() {
+    let looped = solid(
+        "fn ring(n) { let parts = []; for i in 0..n { parts.push(sphere(0.2).translate([1, 0, 0]).rotate([0, 0, 1], i * 360.0 / n)); } union(parts) }
+         ring(4)",
+    );
+    assert_eq!(looped.children().len(), 4);
+    // export wins over the last expression.
+    assert_eq!(
+        solid("export(sphere(2)); cube(1)"),
+        tree(r#"{"type": "sphere", "radius": 2}"#)
+    );
+    // Solids as values of a node map.
+    assert_eq!(
+        solid(r#"node(#{"type": "translate", offset: [1, 0, 0], child: sphere(1) - cube(1)})"#),
+        solid("(sphere(1) - cube(1)).translate([1, 0, 0])")
+    );
+    // A deep chain built in a loop survives embedding.
+    let deep = solid(
+        "let s = sphere(1); for i in 0..2000 { s = s.translate([0.001, 0, 0]); } node(#{type: \"offset\", distance: 0.1, child: s})",
+    );
+    assert_eq!(deep.depth(), 2002);
+}
+
+fn hostile(script: &str, expected: &str) -> ScriptError {
+    let start = Instant::now();
+    let e = run(script).expect_err(script);
+    let took = start.elapsed();
+    assert!(took < Duration::from_secs(2), "{script}: took {took:?}");
+    assert!(e.to_string().contains(expected), "{script}: {e}");
+    e
+}
+
+#[test]
+fn hostile_scripts_stop_with_clear_errors() {
+    hostile("let i = 0; loop { i += 1; }", "operations");
+    hostile("let a = []; loop { a.push(1); }", "s time limit");
+    hostile("fn f(x) { f(x + 1) } f(1)", "nested deeper than 64");
+    hostile(
+        r#"let s = "ab"; loop { s += s; }"#,
+        "string grew beyond the limit",
+    );
+    hostile(
+        "let s = sphere(1); for i in 0..60 { s = s | s; } s",
+        "more than the limit of 1000000",
+    );
+    hostile(
+        "let s = sphere(1); for i in 0..60 { s = node(#{type: \"union\", children: [s, s]}); } s",
+        "more than the limit of 1000000",
+    );
+    let deep = format!("{}1{}", "(".repeat(200), ")".repeat(200));
+    hostile(&format!("sphere({deep})"), "nested too deeply");
+    hostile(
+        &format!("{}sphere(1){}", "[".repeat(200), "]".repeat(200)),
+        "nested too deeply",
+    );
+    hostile(r#"import "os" as os; sphere(1)"#, "'import'");
+    hostile(r#"eval("sphere(1)")"#, "'eval'");
+    hostile(
+        "let a = [1]; loop { a += a; }",
+        "array/BLOB grew beyond the limit (100000)",
+    );
+}
+
+#[test]
+fn errors_name_line_column_and_source() {
+    let e = run("let a = sphere(1);\nlet b = a |;\nb").expect_err("syntax error");
+    assert_eq!((e.line, e.column), (Some(2), Some(12)), "{e}");
+    assert!(
+        e.to_string().starts_with("test.rhai:2:12: syntax error"),
+        "{e}"
+    );
+    assert!(e.to_string().contains("(at: let b = a |;)"), "{e}");
+    let e = run("let a = 1;\nsphere(\"big\")").expect_err("type error");
+    assert!(
+        e.to_string()
+            .starts_with("test.rhai:2:1: sphere radius: expected a number"),
+        "{e}"
+    );
+    let e = run("42").expect_err("no solid");
+    assert!(e.to_string().contains("made no solid"), "{e}");
+    let e = run(r#"node(#{type: "ellipsoid", radii: [1, 2]})"#).expect_err("bad node");
+    assert!(e.to_string().contains("radii"), "{e}");
+}

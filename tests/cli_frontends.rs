@@ -1,0 +1,117 @@
+//! The front ends through the real binary: `.rhai` scripts mesh like their `.json` twins, the
+//! example scripts mesh closed and manifold with the expected genus, `convert` writes the tree,
+//! and a hostile script is stopped with a one-line located error.
+
+use serde_json::Value;
+use solidkit_tests::fixture;
+use std::path::Path;
+use std::process::{Command, Output};
+use std::time::{Duration, Instant};
+
+fn solidkit(args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_solidkit"))
+        .args(args)
+        .output()
+        .expect("run solidkit")
+}
+
+fn path_str(p: &Path) -> &str {
+    p.to_str().expect("UTF-8 path")
+}
+
+fn mesh_report(input: &Path, out: Option<&Path>) -> Value {
+    let mut args = vec!["mesh", path_str(input), "-r", "64", "--json"];
+    if let Some(out) = out {
+        args.extend(["-o", path_str(out)]);
+    }
+    let o = solidkit(&args);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    serde_json::from_slice(&o.stdout).expect("JSON report")
+}
+
+#[test]
+fn the_same_model_as_rhai_and_json_meshes_identically() {
+    let dir = tempfile::tempdir().expect("temp dir");
+    let rhai_stl = dir.path().join("rhai.stl");
+    let json_stl = dir.path().join("json.stl");
+    mesh_report(&fixture("examples/ball_with_holes.rhai"), Some(&rhai_stl));
+    mesh_report(&fixture("examples/ball_with_holes.json"), Some(&json_stl));
+    let a = std::fs::read(&rhai_stl).expect("rhai mesh");
+    let b = std::fs::read(&json_stl).expect("json mesh");
+    assert!(!a.is_empty());
+    assert!(a == b, "the .rhai and .json meshes differ");
+}
+
+#[test]
+fn example_scripts_mesh_closed_and_manifold_with_their_genus() {
+    // (script, shells, total genus)
+    let cases = [
+        ("ball_with_holes.rhai", 1, 5),
+        ("perforated_plate.rhai", 1, 4),
+        ("blobs_and_ring.rhai", 2, 1),
+    ];
+    for (name, shells, genus) in cases {
+        let r = mesh_report(&fixture(&format!("examples/{name}")), None);
+        assert_eq!(r["closed"], true, "{name}");
+        assert_eq!(r["manifold"], true, "{name}");
+        assert_eq!(r["oriented"], true, "{name}");
+        assert_eq!(r["shells"], shells, "{name}");
+        assert_eq!(r["genus"], genus, "{name}");
+        assert!(r["volume"].as_f64().expect("volume") > 0.0, "{name}");
+    }
+}
+
+#[test]
+fn convert_writes_the_json_tree_of_a_script() {
+    let dir = tempfile::tempdir().expect("temp dir");
+    let out = dir.path().join("model.json");
+    let o = solidkit(&[
+        "convert",
+        path_str(&fixture("examples/ball_with_holes.rhai")),
+        "-o",
+        path_str(&out),
+    ]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let written = std::fs::read_to_string(&out).expect("written tree");
+    assert!(written.contains("\"format\": \"solidkit-tree\""));
+    // The written tree converts to itself.
+    let again = dir.path().join("again.json");
+    let o = solidkit(&["convert", path_str(&out), "-o", path_str(&again)]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    assert_eq!(std::fs::read_to_string(&again).expect("again"), written);
+}
+
+#[test]
+fn hostile_and_broken_scripts_fail_with_one_located_line() {
+    let dir = tempfile::tempdir().expect("temp dir");
+    let cases = [
+        (
+            "loop.rhai",
+            "let i = 0;\nwhile true { i += 1; }\n",
+            "loop.rhai:2:",
+        ),
+        (
+            "double.rhai",
+            "let s = sphere(1);\nfor i in 0..60 { s = s | s; }\ns\n",
+            "nodes",
+        ),
+        (
+            "syntax.rhai",
+            "let a = sphere(1);\nlet b = a -;\n",
+            "syntax.rhai:2:12: syntax error",
+        ),
+    ];
+    for (name, script, expected) in cases {
+        let path = dir.path().join(name);
+        std::fs::write(&path, script).expect("write script");
+        let out = dir.path().join("out.json");
+        let start = Instant::now();
+        let o = solidkit(&["convert", path_str(&path), "-o", path_str(&out)]);
+        assert!(start.elapsed() < Duration::from_secs(2), "{name}: too slow");
+        assert_eq!(o.status.code(), Some(2), "{name}");
+        let err = String::from_utf8_lossy(&o.stderr);
+        assert_eq!(err.lines().count(), 1, "{name}: {err}");
+        assert!(err.contains(expected), "{name}: {err}");
+        assert!(!out.exists(), "{name}: output written on failure");
+    }
+}
