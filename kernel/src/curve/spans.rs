@@ -19,8 +19,11 @@ pub(crate) fn flat_spans(pieces: &[BezierPiece]) -> Vec<BezierPiece> {
     for piece in pieces {
         let mut work = vec![(piece.clone(), 0u32)];
         while let Some((p, depth)) = work.pop() {
-            let flat = p.turning() <= MAX_TURNING && p.weight_ratio() <= MAX_WEIGHT_RATIO;
-            if flat || depth >= MAX_DEPTH || p.t1 <= p.t0 {
+            let turning = p.turning();
+            let flat = turning <= MAX_TURNING && p.weight_ratio() <= MAX_WEIGHT_RATIO;
+            // A piece whose arithmetic overflowed (turning NaN or infinite) is not split: halving
+            // cannot mend it, and splitting to MAX_DEPTH everywhere exhausts memory.
+            if flat || !turning.is_finite() || depth >= MAX_DEPTH || p.t1 <= p.t0 {
                 out.push(p);
             } else {
                 let (l, r) = p.halves();

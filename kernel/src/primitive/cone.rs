@@ -19,30 +19,30 @@ pub struct Cone {
 
 impl Cone {
     /// Signed distance in the profile half-plane and the unit direction of increase.
+    ///
+    /// The caps are horizontal, so their distances are computed directly (`hypot(max(ρ − r, 0),
+    /// z − z_cap)`), which is exactly zero on a cap: a cap lying on a sample plane then gives
+    /// exact zeros (one fixed side) rather than rounding noise of either sign.
     fn profile(&self, q: DVec2) -> (f64, DVec2) {
         let h = self.height * 0.5;
         let (r1, r2) = (self.bottom_radius, self.top_radius);
-        let corners = [
-            DVec2::new(0.0, -h),
-            DVec2::new(r1, -h),
-            DVec2::new(r2, h),
-            DVec2::new(0.0, h),
-        ];
-        let mut best = (f64::INFINITY, DVec2::ZERO, DVec2::Y);
-        for w in corners.windows(2) {
-            let (a, b) = (w[0], w[1]);
-            let ab = b - a;
-            let len2 = ab.length_squared();
-            if len2 == 0.0 {
-                continue;
-            }
-            let t = ((q - a).dot(ab) / len2).clamp(0.0, 1.0);
-            let c = a + ab * t;
-            let d = (q - c).length();
-            if d < best.0 {
-                // Outward normal of a segment walked counter-clockwise around the profile.
-                best = (d, c, DVec2::new(ab.y, -ab.x).normalize());
-            }
+        let cap = |r: f64, z: f64, normal: f64| {
+            let (dx, dz) = ((q.x - r).max(0.0), q.y - z);
+            let d = (dx * dx + dz * dz).sqrt();
+            (d, DVec2::new(q.x.min(r), z), DVec2::new(0.0, normal))
+        };
+        let mut best = cap(r1, -h, -1.0);
+        let top = cap(r2, h, 1.0);
+        if top.0 < best.0 {
+            best = top;
+        }
+        let (a, b) = (DVec2::new(r1, -h), DVec2::new(r2, h));
+        let ab = b - a;
+        let t = ((q - a).dot(ab) / ab.length_squared()).clamp(0.0, 1.0);
+        let c = a + ab * t;
+        let d = (q - c).length();
+        if d < best.0 {
+            best = (d, c, DVec2::new(ab.y, -ab.x).normalize());
         }
         let (d, c, n) = best;
         let inside = q.y.abs() <= h && q.x <= r1 + (r2 - r1) * (q.y + h) / (2.0 * h);

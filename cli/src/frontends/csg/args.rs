@@ -66,8 +66,15 @@ impl Stmt {
 
     /// `$fn`, `$fa`, `$fs` with OpenSCAD's defaults 0, 12, 2.
     pub fn resolution(&self) -> Result<Resolution, CsgError> {
+        let fn_ = self.num("$fn", None, 0.0)?;
+        if fn_ > super::facets::MAX_FRAGMENTS as f64 {
+            return Err(self.error(format!(
+                "'$fn' = {fn_}: more than {} fragments",
+                super::facets::MAX_FRAGMENTS
+            )));
+        }
         Ok(Resolution {
-            fn_: self.num("$fn", None, 0.0)?,
+            fn_,
             fa: self.num("$fa", None, 12.0)?,
             fs: self.num("$fs", None, 2.0)?,
         })

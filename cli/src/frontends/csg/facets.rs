@@ -7,18 +7,26 @@ use glam::{DVec2, DVec3};
 /// OpenSCAD's `GRID_FINE`: radii below it get 3 fragments.
 const GRID_FINE: f64 = 0.000_000_953_674_316_406_25;
 
-/// The number of fragments OpenSCAD uses for a circle of radius `r`.
+/// The most fragments a round primitive gets: a bound on memory for hostile input (a sphere of
+/// `n` fragments has about `n²/2` vertices). `$fn` above it is an error (see
+/// `Stmt::resolution`); a `$fa`/`$fs` rule asking for more is clamped.
+pub const MAX_FRAGMENTS: usize = 1024;
+
+/// The number of fragments OpenSCAD uses for a circle of radius `r` (its `get_fragments_from_r`,
+/// with `$fa` and `$fs` raised to its minimum 0.01 and a `NaN` or infinite `$fn` read as 3),
+/// at most [`MAX_FRAGMENTS`].
 pub fn fragments(r: f64, res: Resolution) -> usize {
-    if r < GRID_FINE {
-        3
+    let n = if r.is_nan() || r < GRID_FINE || !res.fn_.is_finite() {
+        3.0
     } else if res.fn_ > 0.0 {
-        res.fn_.max(3.0) as usize
+        res.fn_.max(3.0).floor()
     } else {
-        (360.0 / res.fa)
-            .min(r * 2.0 * std::f64::consts::PI / res.fs)
+        (360.0 / res.fa.max(0.01))
+            .min(r * 2.0 * std::f64::consts::PI / res.fs.max(0.01))
             .max(5.0)
-            .ceil() as usize
-    }
+            .ceil()
+    };
+    n.min(MAX_FRAGMENTS as f64) as usize
 }
 
 /// `sin` of degrees, exact at multiples of 90° like OpenSCAD's `sin_degrees`.

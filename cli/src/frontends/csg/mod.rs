@@ -24,6 +24,8 @@ pub mod lexer;
 pub mod parser;
 
 #[cfg(test)]
+mod fuzz;
+#[cfg(test)]
 mod tests;
 
 pub use error::CsgError;

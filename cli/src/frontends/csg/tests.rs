@@ -170,3 +170,116 @@ fn named_positional_and_values() {
         Err(CsgError::Empty)
     ));
 }
+
+/// Every model of `fixtures/csg/reference.json` (made by `make_reference.py` with Debian's
+/// openscad 2021.01) meshes closed and manifold with its genus; `--facets openscad` gives
+/// OpenSCAD's own STL volume within 1%, exact primitives the closed-form volume within 1%.
+#[test]
+fn openscad_cross_check() {
+    let text = std::fs::read_to_string(fixture("csg/reference.json")).expect("reference.json");
+    let reference: serde_json::Value = serde_json::from_str(&text).expect("JSON");
+    let models = reference["models"].as_object().expect("models");
+    assert!(models.len() >= 10, "{} models", models.len());
+    let mut failures = Vec::new();
+    for (name, r) in models {
+        let file = r["csg"].as_str().expect("csg");
+        let genus = r["genus"].as_i64().expect("genus");
+        let cases = [
+            (Facets::OpenScad, r["openscad_volume"].as_f64()),
+            (Facets::Exact, r["exact_volume"].as_f64()),
+        ];
+        for (facets, expected) in cases {
+            let solid = load(file, facets);
+            // 96 cells along the longest side; the thin twisted walls of polygon_paths need more.
+            let res = if name == "polygon_paths" { 160 } else { 96 };
+            let (m, report) = mesh(&solid, res);
+            let v = signed_volume(&m);
+            let line = format!(
+                "{name} {facets:?}: volume {v:.3} vs {expected:?} ({:+.3}%), genus {:?}, \
+                 boundary {}, non-manifold {}, shells {}",
+                expected.map_or(0.0, |e| (v - e) / e * 100.0),
+                report.genus,
+                report.boundary_edges,
+                report.non_manifold_edges,
+                report.shells
+            );
+            eprintln!("{line}");
+            let ok = report.boundary_edges == 0
+                && report.non_manifold_edges == 0
+                && report.shells == 1
+                && report.genus == Some(genus)
+                && expected.is_none_or(|e| rel_err(v, e) < 0.01);
+            if !ok {
+                failures.push(line);
+            }
+        }
+    }
+    assert!(failures.is_empty(), "{failures:#?}");
+}
+
+/// Inputs that once made a reader panic or exhaust memory (saved by the fuzzer in `fuzz.rs`)
+/// now import without panicking; the JSON ones (a sweep path with a 1e307 point, which split
+/// its spline to 2^24 spans per piece) are errors.
+#[test]
+fn regressions_do_not_panic() {
+    let dir = fixture("regressions");
+    let Ok(entries) = std::fs::read_dir(&dir) else {
+        return;
+    };
+    for entry in entries.flatten() {
+        let path = entry.path();
+        let bytes = std::fs::read(&path).expect("readable");
+        let text = String::from_utf8_lossy(&bytes);
+        match path.extension().and_then(|e| e.to_str()) {
+            Some("csg") => {
+                for facets in [Facets::Exact, Facets::OpenScad] {
+                    let r = std::panic::catch_unwind(|| import(&text, facets).map(|_| ()));
+                    let r = r.unwrap_or_else(|_| panic!("{}: panicked", path.display()));
+                    eprintln!("{} ({facets:?}): {r:?}", path.display());
+                }
+            }
+            Some("json") => {
+                let r =
+                    std::panic::catch_unwind(|| solidkit_kernel::json::from_str(&text).map(|_| ()));
+                let r = r.unwrap_or_else(|_| panic!("{}: panicked", path.display()));
+                assert!(r.is_err(), "{}: accepted", path.display());
+            }
+            _ => {}
+        }
+    }
+}
+
+#[test]
+fn huge_fn_is_an_error_and_fa_fs_are_clamped() {
+    use super::args::Resolution;
+    use super::facets::{MAX_FRAGMENTS, fragments};
+    let e = import("sphere(r = 1, $fn = 1e12);", Facets::OpenScad).unwrap_err();
+    assert!(e.to_string().contains("$fn"), "{e}");
+    let zero = Resolution {
+        fn_: 0.0,
+        fa: 0.0,
+        fs: 0.0,
+    };
+    assert_eq!(fragments(1.0, zero), 629);
+    assert_eq!(fragments(1e9, zero), MAX_FRAGMENTS);
+    assert_eq!(
+        fragments(
+            1.0,
+            Resolution {
+                fn_: f64::NAN,
+                ..zero
+            }
+        ),
+        3
+    );
+    assert_eq!(
+        fragments(
+            1.0,
+            Resolution {
+                fn_: f64::INFINITY,
+                ..zero
+            }
+        ),
+        3
+    );
+}

@@ -120,6 +120,9 @@ impl Sweep {
         })?;
         let index = CurveIndex::new(&path);
         let size = index.bbox().size().length();
+        if !size.is_finite() {
+            return Err(invalid("path", "the path's coordinates are too large"));
+        }
         let (speed, curvature) = path_measures(&path, &index);
         if speed <= 1e-12 * size.max(f64::MIN_POSITIVE) {
             return Err(invalid(
