@@ -1,7 +1,7 @@
 //! Writing `heightfield` parameters (the inverse of `read/heightfield.rs`). A height field read
 //! from a PNG is written with its file path again, not its samples.
 
-use super::num;
+use super::{num, string};
 use crate::primitive::HeightField;
 use crate::primitive::heightfield::{HeightGrid, HeightSource};
 
@@ -16,22 +16,6 @@ fn rows(g: &HeightGrid) -> String {
         })
         .collect();
     format!("[{}]", rows.join(", "))
-}
-
-/// JSON string literal with the characters JSON requires escaped.
-fn string(s: &str) -> String {
-    let mut out = String::with_capacity(s.len() + 2);
-    out.push('"');
-    for c in s.chars() {
-        match c {
-            '"' => out.push_str("\\\""),
-            '\\' => out.push_str("\\\\"),
-            c if (c as u32) < 0x20 => out.push_str(&format!("\\u{:04x}", c as u32)),
-            c => out.push(c),
-        }
-    }
-    out.push('"');
-    out
 }
 
 /// The parameter members of a height-field node, without braces or type.

@@ -2,7 +2,7 @@
 //! was given, `polyhedron` with its vertices and faces, `mesh` with its path, `prism` with its
 //! polygon, holes (when there are any) and direction.
 
-use super::{num, vec3};
+use super::{num, string, vec3};
 use crate::primitive::{MeshSolid, MeshSource, Platonic};
 use glam::DVec2;
 
@@ -52,23 +52,4 @@ fn points2(points: &[DVec2]) -> String {
         .map(|p| format!("[{}, {}]", num(p.x), num(p.y)))
         .collect();
     format!("[{}]", p.join(", "))
-}
-
-/// A JSON string literal.
-fn string(s: &str) -> String {
-    let mut out = String::with_capacity(s.len() + 2);
-    out.push('"');
-    for c in s.chars() {
-        match c {
-            '"' => out.push_str("\\\""),
-            '\\' => out.push_str("\\\\"),
-            '\n' => out.push_str("\\n"),
-            '\r' => out.push_str("\\r"),
-            '\t' => out.push_str("\\t"),
-            c if (c as u32) < 0x20 => out.push_str(&format!("\\u{:04x}", c as u32)),
-            c => out.push(c),
-        }
-    }
-    out.push('"');
-    out
 }
