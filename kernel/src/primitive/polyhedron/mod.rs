@@ -16,6 +16,7 @@ mod mesh_solid;
 mod nearest;
 mod platonic;
 mod resolver;
+mod subdivided;
 mod tree;
 mod winding;
 
@@ -27,3 +28,4 @@ mod tests;
 pub use mesh_solid::{MeshSolid, MeshSolidError, MeshSource};
 pub use platonic::Platonic;
 pub use resolver::{MeshResolver, NoMeshResolver};
+pub use subdivided::{SubdivisionInput, SubdivisionRequest, SubdivisionScheme};
