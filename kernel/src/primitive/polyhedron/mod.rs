@@ -23,6 +23,8 @@ mod winding;
 #[cfg(test)]
 mod json_tests;
 #[cfg(test)]
+mod subdivided_tests;
+#[cfg(test)]
 mod tests;
 
 pub use mesh_solid::{MeshSolid, MeshSolidError, MeshSource};
