@@ -4,6 +4,7 @@ mod bench;
 mod check;
 mod convert;
 mod mesh;
+mod subdivide;
 
 use crate::args::Command;
 use anyhow::Result;
@@ -16,5 +17,6 @@ pub fn run(command: Command) -> Result<u8> {
         Command::Convert(a) => convert::run(&a),
         Command::Bench(a) => bench::run(&a),
         Command::BenchCase(a) => bench::run_case(&a),
+        Command::Subdivide(a) => subdivide::run(&a),
     }
 }
