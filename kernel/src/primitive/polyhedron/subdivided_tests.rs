@@ -22,9 +22,7 @@ impl MeshResolver for Shrink {
         let cube = cube();
         let (vertices, faces) = match request.input {
             SubdivisionInput::Faces { vertices, faces } => (vertices, faces),
-            SubdivisionInput::File { path } if path == "cube.obj" => {
-                (cube.vertices(), cube.faces())
-            }
+            SubdivisionInput::File { path: "cube.obj" } => (cube.vertices(), cube.faces()),
             SubdivisionInput::File { path } => return Err(format!("no such file: {path}")),
         };
         if request.scheme.needs_triangles() && faces.iter().any(|f| f.len() != 3) {
