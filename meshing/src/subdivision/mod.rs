@@ -3,16 +3,16 @@
 //!
 //! | scheme | input | output | kind | counts per level (closed mesh) |
 //! |---|---|---|---|---|
-//! | [`catmull_clark`] | any polygons | quads | approximating, primal | V' = V + E + F, E' = 2E + Σdeg, F' = Σdeg |
-//! | [`loop_subdivision`] | triangles | triangles | approximating, primal | V' = V + E, E' = 2E + 3F, F' = 4F |
-//! | [`butterfly`] | triangles | triangles | interpolating, primal | as Loop |
-//! | [`doo_sabin`] | any polygons | any polygons | approximating, dual | V' = Σdeg, E' = 2Σdeg, F' = F + E + V |
+//! | [`catmull_clark()`] ([rules](mod@catmull_clark)) | any polygons | quads | approximating, primal | V' = V + E + F, E' = 2E + Σdeg, F' = Σdeg |
+//! | [`loop_subdivision()`] ([rules](loop_scheme)) | triangles | triangles | approximating, primal | V' = V + E, E' = 2E + 3F, F' = 4F |
+//! | [`butterfly()`] ([rules](mod@butterfly)) | triangles | triangles | interpolating, primal | as Loop |
+//! | [`doo_sabin()`] ([rules](mod@doo_sabin)) | any polygons | any polygons | approximating, dual | V' = Σdeg, E' = 2Σdeg, F' = F + E + V |
 //!
 //! Every level is one pass over the faces, edges and vertices of the previous mesh (loops only, no
 //! recursion), producing new positions and face loops from which the next [`HalfEdgeMesh`] is built
 //! (`HalfEdgeMesh::from_faces`, which also re-checks the result). Vertex order is stable: primal
 //! schemes keep the old vertices first (their new positions, or the same positions bit for bit for
-//! the butterfly), then one vertex per edge (in the order of [`edges::EdgeIndex`]), then, for
+//! the butterfly), then one vertex per edge (edges numbered by their smaller half-edge id), then, for
 //! Catmull-Clark, one per face. Open meshes use boundary rules (documented per scheme); isolated
 //! vertices stay where they are in the primal schemes and are dropped by Doo-Sabin.
 //!
@@ -20,12 +20,14 @@
 //! schemes, an upper bound for Doo-Sabin); a request above [`Limits::max_faces`] fails with
 //! [`SubdivisionError::TooLarge`] instead of exhausting memory.
 
-mod butterfly;
-mod catmull_clark;
-mod doo_sabin;
+// The scheme modules are public for their documentation (the rules of each scheme); their
+// entry points are the functions below.
+pub mod butterfly;
+pub mod catmull_clark;
+pub mod doo_sabin;
 mod edges;
 mod error;
-mod loop_scheme;
+pub mod loop_scheme;
 mod split;
 
 #[cfg(test)]
@@ -56,8 +58,8 @@ impl Default for Limits {
     }
 }
 
-/// Catmull-Clark subdivision, `levels` times (default [`Limits`]); see [`catmull_clark`'s
-/// rules](catmull_clark::step).
+/// Catmull-Clark subdivision, `levels` times (default [`Limits`]); see [the
+/// rules](mod@catmull_clark).
 ///
 /// # Errors
 /// [`SubdivisionError::TooLarge`] above the default face limit.
@@ -65,7 +67,7 @@ pub fn catmull_clark(mesh: &HalfEdgeMesh, levels: u32) -> Result<HalfEdgeMesh, S
     subdivide(mesh, Scheme::CatmullClark, levels, &Limits::default())
 }
 
-/// Loop subdivision, `levels` times (default [`Limits`]); see [the rules](loop_scheme::step).
+/// Loop subdivision, `levels` times (default [`Limits`]); see [the rules](loop_scheme).
 ///
 /// # Errors
 /// [`SubdivisionError::NotTriangles`] for a mesh with a face that is not a triangle;
@@ -78,7 +80,7 @@ pub fn loop_subdivision(
 }
 
 /// Modified butterfly subdivision, `levels` times (default [`Limits`]); the old vertices keep
-/// their positions bit for bit. See [the rules](butterfly::step).
+/// their positions bit for bit. See [the rules](mod@butterfly).
 ///
 /// # Errors
 /// As [`loop_subdivision`].
@@ -86,7 +88,7 @@ pub fn butterfly(mesh: &HalfEdgeMesh, levels: u32) -> Result<HalfEdgeMesh, Subdi
     subdivide(mesh, Scheme::Butterfly, levels, &Limits::default())
 }
 
-/// Doo-Sabin subdivision, `levels` times (default [`Limits`]); see [the rules](doo_sabin::step).
+/// Doo-Sabin subdivision, `levels` times (default [`Limits`]); see [the rules](mod@doo_sabin).
 ///
 /// # Errors
 /// [`SubdivisionError::TooLarge`] above the default face limit.
