@@ -32,6 +32,56 @@ pub enum Command {
     /// One benchmark case, run by `bench` in a child process so its peak memory is its own.
     #[command(hide = true)]
     BenchCase(BenchCaseArgs),
+    /// Subdivide a polygon mesh (Catmull-Clark, Loop, butterfly, Doo-Sabin), write it and print
+    /// the topology report of the result.
+    Subdivide(SubdivideArgs),
+}
+
+/// Arguments of `solidkit subdivide`.
+#[derive(Debug, clap::Args)]
+pub struct SubdivideArgs {
+    /// The mesh file (.obj .off .ply keep polygonal faces; .stl gives triangles).
+    pub mesh: PathBuf,
+    /// Write the subdivided mesh here (replaced atomically); .obj .off .ply keep its polygons,
+    /// .stl gets them triangulated.
+    #[arg(short, long)]
+    pub output: PathBuf,
+    /// The subdivision scheme.
+    #[arg(long, value_enum)]
+    pub scheme: SchemeArg,
+    /// How many times to apply it.
+    #[arg(long, default_value_t = 1)]
+    pub levels: u32,
+    /// Refuse (before any work) a request whose last level would have more faces than this.
+    #[arg(long, default_value_t = solidkit_meshing::subdivision::Limits::DEFAULT_MAX_FACES)]
+    pub max_faces: u64,
+    /// Print the report as JSON.
+    #[arg(long)]
+    pub json: bool,
+}
+
+/// `--scheme`: the subdivision schemes, by their JSON names.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum SchemeArg {
+    /// Catmull-Clark: any polygons to quads (approximating).
+    CatmullClark,
+    /// Loop: triangles (approximating).
+    Loop,
+    /// Modified butterfly: triangles (interpolating: the vertices stay).
+    Butterfly,
+    /// Doo-Sabin: any polygons (dual, approximating).
+    DooSabin,
+}
+
+impl From<SchemeArg> for solidkit_meshing::subdivision::Scheme {
+    fn from(s: SchemeArg) -> Self {
+        match s {
+            SchemeArg::CatmullClark => Self::CatmullClark,
+            SchemeArg::Loop => Self::Loop,
+            SchemeArg::Butterfly => Self::Butterfly,
+            SchemeArg::DooSabin => Self::DooSabin,
+        }
+    }
 }
 
 /// Polygonization method.

@@ -12,6 +12,7 @@ pub mod marching_cubes;
 pub mod measure;
 pub mod octree;
 pub mod sink;
+pub mod subdivision;
 pub mod topology;
 
 pub use halfedge::HalfEdgeMesh;

@@ -5,6 +5,7 @@ mod check;
 mod compare;
 mod convert;
 mod mesh;
+mod subdivide;
 
 use crate::args::Command;
 use anyhow::Result;
@@ -18,5 +19,6 @@ pub fn run(command: Command) -> Result<u8> {
         Command::Compare(a) => compare::run(&a),
         Command::Bench(a) => bench::run(&a),
         Command::BenchCase(a) => bench::run_case(&a),
+        Command::Subdivide(a) => subdivide::run(&a),
     }
 }
