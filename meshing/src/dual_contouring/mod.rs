@@ -150,3 +150,5 @@ fn write(positions: &[DVec3], triangles: &[[u32; 3]], sink: &mut impl MeshSink) 
 
 #[cfg(test)]
 mod tests;
+#[cfg(test)]
+mod tests_manifold;
