@@ -9,6 +9,7 @@ use solidkit_kernel::{Aabb, Solid};
 use solidkit_meshing::TopologyReport;
 use solidkit_meshing::io::write_mesh;
 use solidkit_meshing::marching_cubes::GridSpec;
+use solidkit_meshing::dual_contouring::{DcOptions, mesh_dc};
 use solidkit_meshing::octree::{SparseOptions, mesh_sparse};
 use std::time::Instant;
 
@@ -36,12 +37,22 @@ pub fn run(a: &MeshArgs) -> Result<u8> {
             a.input.display()
         ));
     }
+    if a.tolerance.is_some() && a.method != Method::Dc {
+        return Err(anyhow!("--tolerance needs --method dc"));
+    }
     let spec = GridSpec::for_bounds(&bounds, a.resolution)
         .map_err(|e| anyhow!("{}: {e}", a.input.display()))?;
     let start = Instant::now();
     let program = solid.compile();
     let (mesh, stats) = match a.method {
         Method::Mc => mesh_sparse(&program, spec, &SparseOptions::default())?,
+        Method::Dc => {
+            let opts = DcOptions {
+                tolerance: a.tolerance,
+                ..DcOptions::default()
+            };
+            mesh_dc(&program, spec, &opts)?
+        }
     };
     let time_s = start.elapsed().as_secs_f64();
     let r = TopologyReport::of(&mesh);
@@ -53,7 +64,11 @@ pub fn run(a: &MeshArgs) -> Result<u8> {
             ("time_s", json!(time_s)),
             ("resolution", json!(a.resolution)),
             ("cells", json!(spec.cells)),
-            ("method", json!("mc")),
+            ("method", json!(match a.method {
+                Method::Mc => "mc",
+                Method::Dc => "dc",
+            })),
+            ("tolerance", json!(a.tolerance)),
             ("samples_evaluated", json!(stats.samples_evaluated)),
             ("program_length", json!(program.len())),
         ];
