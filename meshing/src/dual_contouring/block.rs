@@ -65,6 +65,8 @@ pub(crate) struct Block {
     pub samples: u64,
     /// Seconds of field evaluation.
     pub evaluation_s: f64,
+    /// The program valid in the block (sparse path).
+    pub program: Option<std::sync::Arc<solidkit_kernel::Program>>,
 }
 
 impl Block {

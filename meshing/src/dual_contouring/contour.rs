@@ -3,6 +3,7 @@
 //! and places the split-face vertices.
 
 use super::block::{Block, NO_VERTEX, OwnedEdge, local_edge};
+use super::crossing::DcField;
 use super::patches::{NO_PATCH, edge_number, face_edges, face_segment, patch_table};
 use super::qef::Qef;
 use crate::marching_cubes::GridSpec;
@@ -70,8 +71,46 @@ pub(crate) enum Corner {
 #[derive(Debug, Clone, Copy)]
 pub(crate) struct Quad {
     pub v: [u32; 4],
-    pub point: DVec3,
     pub normal: DVec3,
+    /// Split along `v[1]`–`v[3]` (else along `v[0]`–`v[2]`).
+    pub other_diagonal: bool,
+}
+
+/// Field values for choosing quad diagonals: `block` is the block of a cell containing `p`, whose
+/// program is valid there.
+pub(crate) trait Probe: Sync {
+    /// Buffers of one worker.
+    type Scratch: Default + Send;
+    /// The field at `p`.
+    fn value(&self, block: &Block, p: DVec3, s: &mut Self::Scratch) -> f64;
+}
+
+/// Probes with each block's own (pruned) program.
+pub(crate) struct ProgramProbe;
+
+impl Probe for ProgramProbe {
+    type Scratch = Vec<f64>;
+
+    fn value(&self, block: &Block, p: DVec3, s: &mut Vec<f64>) -> f64 {
+        block
+            .program
+            .as_ref()
+            .expect("sparse blocks keep their program")
+            .value_with(p, s)
+    }
+}
+
+/// Probes one field everywhere.
+pub(crate) struct FieldProbe<'a, F>(pub &'a F);
+
+impl<F: DcField> Probe for FieldProbe<'_, F> {
+    type Scratch = F::Scratch;
+
+    fn value(&self, _: &Block, p: DVec3, s: &mut F::Scratch) -> f64 {
+        let (mut v, mut g) = ([0.0], [DVec3::ZERO]);
+        self.0.values_gradients(&[p], &mut v, &mut g, s);
+        v[0]
+    }
 }
 
 /// A polygon through split-face vertices; fanned from a centre vertex at the edge's crossing.
@@ -86,8 +125,6 @@ pub(crate) struct Special {
 pub(crate) struct Contour {
     /// Cell patch vertices (block by block), then split-face vertices.
     pub positions: Vec<DVec3>,
-    /// Number of cell patch vertices (the first ones in `positions`).
-    pub cell_vertices: usize,
     /// First cell patch vertex of each block.
     pub bases: Vec<u32>,
     /// Quads, block by block.
@@ -134,7 +171,12 @@ impl Cells<'_> {
 }
 
 /// Builds the polygons of every block's owned edges and places the split-face vertices.
-pub(crate) fn assemble(blocks: &[Block], spec: &GridSpec, block_size: usize) -> Contour {
+pub(crate) fn assemble<P: Probe>(
+    blocks: &[Block],
+    spec: &GridSpec,
+    block_size: usize,
+    probe: &P,
+) -> Contour {
     let dims = spec.cells.map(|c| c.div_ceil(block_size).max(1));
     let mut bases = Vec::with_capacity(blocks.len());
     let mut count = 0u32;
@@ -150,11 +192,11 @@ pub(crate) fn assemble(blocks: &[Block], spec: &GridSpec, block_size: usize) -> 
     };
     let per_block: Vec<(Vec<Quad>, Vec<(Vec<Corner>, DVec3)>)> = blocks
         .par_iter()
-        .map(|b| {
+        .map_init(P::Scratch::default, |scratch, b| {
             let mut quads = Vec::with_capacity(b.edges.len());
             let mut specials = Vec::new();
             for e in &b.edges {
-                match polygon(b, e, &cells, spec) {
+                match polygon(b, e, &cells, spec, probe, scratch) {
                     Some(Ok(q)) => quads.push(q),
                     Some(Err(corners)) => specials.push((corners, e.point)),
                     None => {}
@@ -200,7 +242,6 @@ pub(crate) fn assemble(blocks: &[Block], spec: &GridSpec, block_size: usize) -> 
     }
     Contour {
         positions,
-        cell_vertices: count as usize,
         bases,
         quads,
         specials,
@@ -209,11 +250,13 @@ pub(crate) fn assemble(blocks: &[Block], spec: &GridSpec, block_size: usize) -> 
 
 /// The polygon around owned edge `e`: `Ok` for a plain quad, `Err` with split-face corners, `None`
 /// when a cell around it lies outside the grid.
-fn polygon(
+fn polygon<P: Probe>(
     b: &Block,
     e: &OwnedEdge,
     cells: &Cells,
     spec: &GridSpec,
+    probe: &P,
+    scratch: &mut P::Scratch,
 ) -> Option<Result<Quad, Vec<Corner>>> {
     let table = patch_table();
     let axis = e.axis as usize;
@@ -251,6 +294,12 @@ fn polygon(
         debug_assert_ne!(p, NO_PATCH);
         r.first + p as u32
     };
+    let position = |k: usize| {
+        let (_, r) = refs[k];
+        let o = &cells.blocks[r.block];
+        let p = table.patch_of_edge[r.mask as usize][edge_in_cell[k] as usize];
+        o.vertices[(o.first[r.local] + p as u32) as usize]
+    };
     let mut corners = Vec::new();
     let mut split = false;
     for k in 0..4 {
@@ -281,10 +330,36 @@ fn polygon(
     if split {
         Some(Err(corners))
     } else {
+        let p = [0, 1, 2, 3].map(position);
+        let mut other_diagonal = better_by_normal(&p, e.normal);
+        // A folded quad: the diagonal whose midpoint lies nearer the surface keeps the crease
+        // (sharp edges run along diagonals), unless that flips a triangle.
+        let (m0, m1) = (0.5 * (p[0] + p[2]), 0.5 * (p[1] + p[3]));
+        if (m0 - m1).length() > FOLD * spec.cell {
+            let mut value = |m: DVec3| {
+                let mut c = [0, 1, 2].map(|a| ((m[a] - spec.origin[a]) / spec.cell).floor());
+                c[axis] = g[axis] as f64;
+                c[u] = c[u].clamp(g[u] as f64 - 1.0, g[u] as f64);
+                c[v] = c[v].clamp(g[v] as f64 - 1.0, g[v] as f64);
+                let c = c.map(|x| x as usize);
+                let r = cells.get(c).expect("the four cells are surface cells");
+                probe.value(&cells.blocks[r.block], m, scratch).abs()
+            };
+            let (f0, f1) = (value(m0), value(m1));
+            let flips = |t: [[usize; 3]; 2]| {
+                t.iter()
+                    .any(|t| agreement([p[t[0]], p[t[1]], p[t[2]]], e.normal) <= 0.0)
+            };
+            let by_field = f1 < f0;
+            let tris = |d: bool| if d { SECOND } else { FIRST };
+            if !flips(tris(by_field)) {
+                other_diagonal = by_field;
+            }
+        }
         Some(Ok(Quad {
             v: [vertex(0), vertex(1), vertex(2), vertex(3)],
-            point: e.point,
             normal: e.normal,
+            other_diagonal,
         }))
     }
 }
@@ -317,4 +392,34 @@ fn face_vertex(k: &FaceKey, cells: &Cells, spec: &GridSpec) -> DVec3 {
         q.add(p, n);
     }
     q.solve(flo, hi).0
+}
+
+/// Quads whose diagonal midpoints are further apart than this (in cells) are folded: their
+/// diagonal is chosen on the field.
+const FOLD: f64 = 0.02;
+
+/// The two triangulations of a quad `[a, b, c, d]`: along `a`–`c`, and along `b`–`d`.
+pub(crate) const FIRST: [[usize; 3]; 2] = [[0, 1, 2], [0, 2, 3]];
+pub(crate) const SECOND: [[usize; 3]; 2] = [[0, 1, 3], [1, 2, 3]];
+
+/// How well a triangle agrees with `normal` (cosine of the angle; -1 when degenerate).
+pub(crate) fn agreement(t: [DVec3; 3], normal: DVec3) -> f64 {
+    let n = (t[1] - t[0]).cross(t[2] - t[0]);
+    let len = n.length();
+    if len > 0.0 && len.is_finite() {
+        n.dot(normal) / len
+    } else {
+        -1.0
+    }
+}
+
+/// True when the `b`–`d` diagonal gives triangles agreeing better with `normal` (the worse of
+/// the two triangles decides).
+pub(crate) fn better_by_normal(p: &[DVec3; 4], normal: DVec3) -> bool {
+    let score = |t: [[usize; 3]; 2]| {
+        t.iter()
+            .map(|t| agreement([p[t[0]], p[t[1]], p[t[2]]], normal))
+            .fold(f64::MAX, f64::min)
+    };
+    score(SECOND) > score(FIRST)
 }

@@ -6,7 +6,7 @@
 //! With a vertex map (adaptive simplification), each polygon's corners are mapped first; repeated
 //! consecutive corners merge and polygons left with fewer than three corners vanish.
 
-use super::contour::{Contour, Quad};
+use super::contour::{Contour, FIRST, Quad, SECOND, better_by_normal};
 use glam::DVec3;
 
 /// Triangles of a contour (vertex ids into `positions`, which gains the polygon centres).
@@ -31,6 +31,7 @@ pub(crate) fn triangles(
                         ..*q
                     },
                     positions,
+                    ring[..] == q.v[..],
                 )),
                 _ => {}
             }
@@ -60,29 +61,14 @@ fn merge_repeats(ring: &mut Vec<u32>) {
     }
 }
 
-/// How well triangle `t` agrees with `normal` (cosine of the angle; -1 when degenerate).
-fn agreement(t: [u32; 3], positions: &[DVec3], normal: DVec3) -> f64 {
-    let [a, b, c] = t.map(|v| positions[v as usize]);
-    let n = (b - a).cross(c - a);
-    let len = n.length();
-    if len > 0.0 && len.is_finite() {
-        n.dot(normal) / len
+/// The two triangles of a quad, along the stored diagonal when its corners are unchanged, else
+/// along the one agreeing better with the normal.
+fn split_quad(q: &Quad, positions: &[DVec3], unchanged: bool) -> [[u32; 3]; 2] {
+    let other = if unchanged {
+        q.other_diagonal
     } else {
-        -1.0
-    }
-}
-
-/// The two triangles of a quad, along the better diagonal.
-fn split_quad(q: &Quad, positions: &[DVec3]) -> [[u32; 3]; 2] {
-    let [a, b, c, d] = q.v;
-    let first = [[a, b, c], [a, c, d]];
-    let second = [[a, b, d], [b, c, d]];
-    let score = |t: &[[u32; 3]; 2]| {
-        agreement(t[0], positions, q.normal).min(agreement(t[1], positions, q.normal))
+        better_by_normal(&q.v.map(|v| positions[v as usize]), q.normal)
     };
-    if score(&second) > score(&first) {
-        second
-    } else {
-        first
-    }
+    let t = if other { SECOND } else { FIRST };
+    t.map(|t| t.map(|k| q.v[k]))
 }

@@ -72,7 +72,7 @@ pub fn mesh_dc_into(
     let blocks = sources::sparse_blocks(program, &spec, &opts.sparse, keep, &mut stats)?;
     let t = std::time::Instant::now();
     let brick = opts.sparse.brick_size();
-    let contour = contour::assemble(&blocks, &spec, brick);
+    let contour = contour::assemble(&blocks, &spec, brick, &contour::ProgramProbe);
     let mut positions = contour.positions.clone();
     let triangles = match opts.tolerance {
         Some(tol) => {
@@ -106,7 +106,7 @@ pub fn mesh_dc_samples<F: DcField>(
 ) -> IndexedMesh {
     const TILE: usize = 8;
     let blocks = sources::dense_blocks(field, samples, TILE, tolerance.is_some());
-    let contour = contour::assemble(&blocks, &samples.spec, TILE);
+    let contour = contour::assemble(&blocks, &samples.spec, TILE, &contour::FieldProbe(field));
     let mut positions = contour.positions.clone();
     let triangles = match tolerance {
         Some(tol) => {

@@ -94,11 +94,6 @@ impl Qef {
         self.count += o.count;
     }
 
-    /// The mass point (world coordinates).
-    pub fn mass_point(&self) -> DVec3 {
-        self.reference + self.mass / self.count.max(1) as f64
-    }
-
     /// `E(x)` at world point `x`.
     pub fn error(&self, x: DVec3) -> f64 {
         let q = x - self.reference;

@@ -64,6 +64,7 @@ pub(crate) fn sparse_blocks(
                     scratch,
                 );
                 b.evaluation_s += sampling;
+                b.program = Some(leaf.program.clone());
                 let d = done.fetch_add(1, Ordering::Relaxed) + 1;
                 opts.report(Progress {
                     stage: "bricks",
