@@ -151,4 +151,6 @@ fn write(positions: &[DVec3], triangles: &[[u32; 3]], sink: &mut impl MeshSink) 
 #[cfg(test)]
 mod tests;
 #[cfg(test)]
+mod tests_accuracy;
+#[cfg(test)]
 mod tests_manifold;
