@@ -9,6 +9,7 @@ pub mod dual_contouring;
 pub mod halfedge;
 pub mod io;
 pub mod marching_cubes;
+pub mod measure;
 pub mod octree;
 pub mod sink;
 pub mod topology;
