@@ -315,9 +315,17 @@ fn mesh_with_dual_contouring_and_tolerance() {
         solidkit(&args)
     };
     let plain = run(&["--method", "dc"]);
-    assert_eq!(plain.status.code(), Some(0), "{}", String::from_utf8_lossy(&plain.stderr));
+    assert_eq!(
+        plain.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&plain.stderr)
+    );
     let plain = stdout_json(&plain);
-    assert_eq!((plain["genus"].as_i64(), plain["closed"].as_bool()), (Some(1), Some(true)));
+    assert_eq!(
+        (plain["genus"].as_i64(), plain["closed"].as_bool()),
+        (Some(1), Some(true))
+    );
     assert_eq!(plain["method"], "dc");
     let coarse = run(&["--method", "dc", "--tolerance", "0.01"]);
     assert_eq!(coarse.status.code(), Some(0));
@@ -325,10 +333,16 @@ fn mesh_with_dual_contouring_and_tolerance() {
     assert_eq!(coarse["genus"].as_i64(), Some(1));
     assert_eq!(coarse["manifold"].as_bool(), Some(true));
     assert!(coarse["faces"].as_u64() < plain["faces"].as_u64());
-    for bad in [&["--tolerance", "0.01"][..], &["--method", "dc", "--tolerance", "-1"]] {
+    for bad in [
+        &["--tolerance", "0.01"][..],
+        &["--method", "dc", "--tolerance", "-1"],
+    ] {
         let o = run(bad);
         assert_eq!(o.status.code(), Some(2), "{bad:?}");
         let err = String::from_utf8_lossy(&o.stderr);
-        assert!(err.starts_with("error:") && err.contains("tolerance"), "{err}");
+        assert!(
+            err.starts_with("error:") && err.contains("tolerance"),
+            "{err}"
+        );
     }
 }

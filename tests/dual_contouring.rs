@@ -6,19 +6,19 @@
 //!   the field is the exact distance to the complement: boxes are convex, so the sponge's
 //!   difference field is exact inside; the path length plus that distance bounds the distance);
 //! - surface to mesh: the plain mesh's vertices projected onto the exact surface, then the exact
-//!   distance to the nearest triangle of the adaptive mesh (triangles binned on a grid).
+//!   distance to the adaptive mesh (`measure`: BVH nearest triangle).
 //!
 //! Level 2 at 128³ runs by default (cut ≥ 10×); level 3 at 256³ (cut ≥ 20×, genus 1409: the
 //! acceptance figure) is `--ignored`.
 
 use glam::DVec3;
 use rayon::prelude::*;
+use solidkit_kernel::Program;
 use solidkit_kernel::models::{Model, menger_genus};
-use solidkit_kernel::{IndexedMesh, Program};
 use solidkit_meshing::TopologyReport;
 use solidkit_meshing::dual_contouring::{DcOptions, mesh_dc};
 use solidkit_meshing::marching_cubes::GridSpec;
-use std::collections::HashMap;
+use solidkit_meshing::measure::{TriangleTree, one_sided};
 
 /// An upper bound of the distance from `q` to the surface of `program`'s solid (exact inside).
 fn distance_bound(program: &Program, q: DVec3) -> f64 {
@@ -51,79 +51,6 @@ fn project(program: &Program, q: DVec3) -> Option<DVec3> {
     None
 }
 
-/// Closest distance from `p` to triangle `abc` (Ericson, Real-Time Collision Detection 5.1.5).
-fn triangle_distance(p: DVec3, [a, b, c]: [DVec3; 3]) -> f64 {
-    let (ab, ac, ap) = (b - a, c - a, p - a);
-    let (d1, d2) = (ab.dot(ap), ac.dot(ap));
-    if d1 <= 0.0 && d2 <= 0.0 {
-        return ap.length();
-    }
-    let bp = p - b;
-    let (d3, d4) = (ab.dot(bp), ac.dot(bp));
-    if d3 >= 0.0 && d4 <= d3 {
-        return bp.length();
-    }
-    let vc = d1 * d4 - d3 * d2;
-    if vc <= 0.0 && d1 >= 0.0 && d3 <= 0.0 {
-        return (p - (a + ab * (d1 / (d1 - d3)))).length();
-    }
-    let cp = p - c;
-    let (d5, d6) = (ab.dot(cp), ac.dot(cp));
-    if d6 >= 0.0 && d5 <= d6 {
-        return cp.length();
-    }
-    let vb = d5 * d2 - d1 * d6;
-    if vb <= 0.0 && d2 >= 0.0 && d6 <= 0.0 {
-        return (p - (a + ac * (d2 / (d2 - d6)))).length();
-    }
-    let va = d3 * d6 - d5 * d4;
-    if va <= 0.0 && d4 - d3 >= 0.0 && d5 - d6 >= 0.0 {
-        let t = (d4 - d3) / ((d4 - d3) + (d5 - d6));
-        return (p - (b + (c - b) * t)).length();
-    }
-    let denom = 1.0 / (va + vb + vc);
-    (p - (a + ab * (vb * denom) + ac * (vc * denom))).length()
-}
-
-/// Distance from points to a mesh, exact up to `radius` (beyond it: infinity).
-struct Binned<'a> {
-    mesh: &'a IndexedMesh,
-    bin: f64,
-    bins: HashMap<[i64; 3], Vec<u32>>,
-}
-
-impl<'a> Binned<'a> {
-    fn new(mesh: &'a IndexedMesh, radius: f64) -> Self {
-        let bin = radius;
-        let mut bins: HashMap<[i64; 3], Vec<u32>> = HashMap::new();
-        for t in 0..mesh.triangles.len() {
-            let p = mesh.triangle_positions(t);
-            let lo = p[0].min(p[1]).min(p[2]) - DVec3::splat(radius);
-            let hi = p[0].max(p[1]).max(p[2]) + DVec3::splat(radius);
-            let (a, b) = ((lo / bin).floor(), (hi / bin).floor());
-            for z in a.z as i64..=b.z as i64 {
-                for y in a.y as i64..=b.y as i64 {
-                    for x in a.x as i64..=b.x as i64 {
-                        bins.entry([x, y, z]).or_default().push(t as u32);
-                    }
-                }
-            }
-        }
-        Self { mesh, bin, bins }
-    }
-
-    fn distance(&self, q: DVec3) -> f64 {
-        let c = (q / self.bin).floor();
-        self.bins
-            .get(&[c.x as i64, c.y as i64, c.z as i64])
-            .map_or(f64::INFINITY, |ts| {
-                ts.iter()
-                    .map(|&t| triangle_distance(q, self.mesh.triangle_positions(t as usize)))
-                    .fold(f64::INFINITY, f64::min)
-            })
-    }
-}
-
 fn menger_case(level: u32, resolution: usize, tolerance_cells: f64, min_cut: f64) {
     let model = Model::by_name(&format!("menger-{level}")).unwrap();
     let program = model.solid.compile();
@@ -137,7 +64,11 @@ fn menger_case(level: u32, resolution: usize, tolerance_cells: f64, min_cut: f64
     let (adaptive, _) = mesh_dc(&program, spec, &opts).unwrap();
     let (rp, ra) = (TopologyReport::of(&plain), TopologyReport::of(&adaptive));
     for (r, what) in [(&rp, "plain"), (&ra, "adaptive")] {
-        assert!(r.closed && r.manifold && r.oriented, "{what}: {:?}", r.examples);
+        assert!(
+            r.closed && r.manifold && r.oriented,
+            "{what}: {:?}",
+            r.examples
+        );
         assert_eq!(r.genus, Some(menger_genus(level)), "{what}");
     }
     let cut = rp.faces as f64 / ra.faces as f64;
@@ -155,13 +86,14 @@ fn menger_case(level: u32, resolution: usize, tolerance_cells: f64, min_cut: f64
         .map(|q| distance_bound(&program, *q))
         .reduce(|| 0.0, f64::max);
     // Surface to mesh.
-    let binned = Binned::new(&adaptive, 2.0 * tolerance);
-    let to_mesh = plain
+    let tree = TriangleTree::new(&adaptive).unwrap();
+    let surface: Vec<DVec3> = plain
         .positions
         .par_iter()
         .filter_map(|q| project(&program, *q))
-        .map(|p| binned.distance(p))
-        .reduce(|| 0.0, f64::max);
+        .collect();
+    assert!(surface.len() > plain.positions.len() / 2);
+    let to_mesh = one_sided(&surface, &tree).max;
     eprintln!(
         "menger-{level} {resolution}³, tolerance {tolerance_cells} cells: {} -> {} triangles ({cut:.1}×), \
          Hausdorff mesh→surface ≤ {:.3} cells, surface→mesh {:.3} cells",

@@ -7,9 +7,9 @@ use glam::DVec3;
 use serde_json::json;
 use solidkit_kernel::{Aabb, Solid};
 use solidkit_meshing::TopologyReport;
+use solidkit_meshing::dual_contouring::{DcOptions, mesh_dc};
 use solidkit_meshing::io::write_mesh;
 use solidkit_meshing::marching_cubes::GridSpec;
-use solidkit_meshing::dual_contouring::{DcOptions, mesh_dc};
 use solidkit_meshing::octree::{SparseOptions, mesh_sparse};
 use std::time::Instant;
 
@@ -64,10 +64,13 @@ pub fn run(a: &MeshArgs) -> Result<u8> {
             ("time_s", json!(time_s)),
             ("resolution", json!(a.resolution)),
             ("cells", json!(spec.cells)),
-            ("method", json!(match a.method {
-                Method::Mc => "mc",
-                Method::Dc => "dc",
-            })),
+            (
+                "method",
+                json!(match a.method {
+                    Method::Mc => "mc",
+                    Method::Dc => "dc",
+                }),
+            ),
             ("tolerance", json!(a.tolerance)),
             ("samples_evaluated", json!(stats.samples_evaluated)),
             ("program_length", json!(program.len())),

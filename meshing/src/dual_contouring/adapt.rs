@@ -52,7 +52,9 @@ pub(crate) fn simplify(
     let mut forbidden: HashSet<NodeId> = HashSet::new();
     for _ in 0..MAX_ROUNDS {
         positions.truncate(base_len);
-        let (map, nodes) = collapse(blocks, contour, spec, signs, tolerance, &forbidden, positions);
+        let (map, nodes) = collapse(
+            blocks, contour, spec, signs, tolerance, &forbidden, positions,
+        );
         let cluster_end = positions.len();
         let tris = emit::triangles(contour, positions, Some(&map));
         let bad = bad_vertices(&tris, positions.len());
@@ -206,7 +208,11 @@ fn node_state(
     for (k, plane) in s.iter_mut().enumerate() {
         for (j, row) in plane.iter_mut().enumerate() {
             for (i, v) in row.iter_mut().enumerate() {
-                *v = signs.inside([p[0] * size + i * h, p[1] * size + j * h, p[2] * size + k * h]);
+                *v = signs.inside([
+                    p[0] * size + i * h,
+                    p[1] * size + j * h,
+                    p[2] * size + k * h,
+                ]);
             }
         }
     }

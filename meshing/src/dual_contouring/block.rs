@@ -135,7 +135,13 @@ pub(crate) fn build<F: DcField>(
     }
     s.crossings.clear();
     let start = std::time::Instant::now();
-    refine(field, &s.queries, &mut s.crossings, &mut s.search, &mut s.field);
+    refine(
+        field,
+        &s.queries,
+        &mut s.crossings,
+        &mut s.search,
+        &mut s.field,
+    );
     let evaluation_s = start.elapsed().as_secs_f64();
     let table = patch_table();
     let cells = e[0] * e[1] * e[2];
@@ -215,7 +221,11 @@ pub(crate) fn build<F: DcField>(
     b.face_crossings = face_keys
         .into_iter()
         .map(|key| {
-            let l = [(key >> 2 & 15) as usize, (key >> 6 & 15) as usize, (key >> 10) as usize];
+            let l = [
+                (key >> 2 & 15) as usize,
+                (key >> 6 & 15) as usize,
+                (key >> 10) as usize,
+            ];
             let idx = l[0] + nx * l[1] + nxy * l[2];
             let (p, nrm) = s.crossings[s.ids[3 * idx + (key & 3) as usize] as usize];
             (key, p, nrm)

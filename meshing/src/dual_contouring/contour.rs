@@ -377,7 +377,10 @@ fn face_vertex(k: &FaceKey, cells: &Cells, spec: &GridSpec) -> DVec3 {
     flo[axis] += spec.cell;
     hi[axis] = flo[axis];
     let mut q = Qef::new(0.5 * (flo + hi));
-    q.add(flo, DVec3::from_array(std::array::from_fn(|a| f64::from(u8::from(a == axis)))));
+    q.add(
+        flo,
+        DVec3::from_array(std::array::from_fn(|a| f64::from(u8::from(a == axis)))),
+    );
     for edge in face_edges(axis, 1) {
         if face_segment(r.mask, axis, 1, edge) != k.segment {
             continue;

@@ -76,7 +76,11 @@ pub(crate) fn refine<F: DcField>(
     for q in queries {
         let (fa, fb) = (q.fa as f64, q.fb as f64);
         let t = fa / (fa - fb);
-        s.t.push(if t.is_finite() { t.clamp(0.0, 1.0) } else { 0.5 });
+        s.t.push(if t.is_finite() {
+            t.clamp(0.0, 1.0)
+        } else {
+            0.5
+        });
         s.lo.push(0.0);
         s.hi.push(1.0);
     }

@@ -59,7 +59,9 @@ fn rotated_cube_corners_are_reproduced() {
         .rotate(axis, angle.to_degrees())
         .translate(offset);
     let spec = grid(&s, 32);
-    let m = mesh_dc(&s.compile(), spec, &DcOptions::default()).unwrap().0;
+    let m = mesh_dc(&s.compile(), spec, &DcOptions::default())
+        .unwrap()
+        .0;
     let r = assert_closed_manifold(&m, "cube");
     assert_eq!(r.genus, Some(0));
     assert!((r.volume - 1.0).abs() < 1e-3, "{}", r.volume);
@@ -75,7 +77,11 @@ fn rotated_cube_corners_are_reproduced() {
             .iter()
             .map(|p| (*p - corner).length())
             .fold(f64::MAX, f64::min);
-        assert!(best < 1e-3 * spec.cell, "corner {c}: {} cells", best / spec.cell);
+        assert!(
+            best < 1e-3 * spec.cell,
+            "corner {c}: {} cells",
+            best / spec.cell
+        );
     }
 }
 

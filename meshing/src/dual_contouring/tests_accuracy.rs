@@ -1,10 +1,11 @@
 //! Accuracy on a sharp rim: a unit sphere minus a cube whose face cuts off a cap, leaving a
 //! circular rim with a 114° dihedral angle, at 128³. Two-sided Hausdorff distance near the rim
 //! between the mesh and the exact surface, measured with the exact distance to the surface
-//! (sphere, disc and rim pieces) one way and exact point-to-triangle distances from points along
-//! the rim the other way, for dual contouring and for marching cubes.
+//! (sphere, disc and rim pieces) one way and the BVH point-to-mesh distance (`measure`) from
+//! points along the rim the other way, for dual contouring and for marching cubes.
 
 use super::*;
+use crate::measure::TriangleTree;
 use crate::octree::mesh_sparse;
 use glam::DVec3;
 use solidkit_kernel::Solid;
@@ -45,40 +46,6 @@ fn rim_distance(q: DVec3) -> f64 {
     ((q.x - CUT).powi(2) + (radial - rho()).powi(2)).sqrt()
 }
 
-/// Closest distance from `p` to triangle `abc` (Ericson, Real-Time Collision Detection 5.1.5).
-fn triangle_distance(p: DVec3, a: DVec3, b: DVec3, c: DVec3) -> f64 {
-    let (ab, ac, ap) = (b - a, c - a, p - a);
-    let (d1, d2) = (ab.dot(ap), ac.dot(ap));
-    if d1 <= 0.0 && d2 <= 0.0 {
-        return ap.length();
-    }
-    let bp = p - b;
-    let (d3, d4) = (ab.dot(bp), ac.dot(bp));
-    if d3 >= 0.0 && d4 <= d3 {
-        return bp.length();
-    }
-    let vc = d1 * d4 - d3 * d2;
-    if vc <= 0.0 && d1 >= 0.0 && d3 <= 0.0 {
-        return (p - (a + ab * (d1 / (d1 - d3)))).length();
-    }
-    let cp = p - c;
-    let (d5, d6) = (ab.dot(cp), ac.dot(cp));
-    if d6 >= 0.0 && d5 <= d6 {
-        return cp.length();
-    }
-    let vb = d5 * d2 - d1 * d6;
-    if vb <= 0.0 && d2 >= 0.0 && d6 <= 0.0 {
-        return (p - (a + ac * (d2 / (d2 - d6)))).length();
-    }
-    let va = d3 * d6 - d5 * d4;
-    if va <= 0.0 && d4 - d3 >= 0.0 && d5 - d6 >= 0.0 {
-        let t = (d4 - d3) / ((d4 - d3) + (d5 - d6));
-        return (p - (b + (c - b) * t)).length();
-    }
-    let denom = 1.0 / (va + vb + vc);
-    (p - (a + ab * (vb * denom) + ac * (vc * denom))).length()
-}
-
 /// Two-sided Hausdorff distance between the mesh and the exact surface within `band` of the rim.
 fn rim_hausdorff(m: &IndexedMesh, band: f64) -> f64 {
     let near: Vec<[DVec3; 3]> = (0..m.triangles.len())
@@ -99,13 +66,10 @@ fn rim_hausdorff(m: &IndexedMesh, band: f64) -> f64 {
             }
         }
     }
-    // Surface to mesh: points along the rim.
+    // Surface to mesh: points along the rim, to the mesh's BVH.
+    let tree = TriangleTree::new(m).unwrap();
     for q in rim_points(3000) {
-        let d = near
-            .iter()
-            .map(|t| triangle_distance(q, t[0], t[1], t[2]))
-            .fold(f64::MAX, f64::min);
-        worst = worst.max(d);
+        worst = worst.max(tree.nearest(q).distance);
     }
     worst
 }
@@ -136,5 +100,10 @@ fn sharp_rim_is_kept_far_better_than_by_marching_cubes() {
         hm / spec.cell
     );
     assert!(hd < 0.05 * spec.cell, "dc {} cells", hd / spec.cell);
-    assert!(hm > 5.0 * hd, "mc {} dc {} cells", hm / spec.cell, hd / spec.cell);
+    assert!(
+        hm > 5.0 * hd,
+        "mc {} dc {} cells",
+        hm / spec.cell,
+        hd / spec.cell
+    );
 }

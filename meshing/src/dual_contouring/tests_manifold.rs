@@ -32,7 +32,11 @@ impl DcField for Trilinear<'_> {
                 let w = |a: usize| if o[a] == 1 { f[a] } else { 1.0 - f[a] };
                 let dw = |a: usize| if o[a] == 1 { 1.0 } else { -1.0 };
                 v += s * w(0) * w(1) * w(2);
-                d += s * DVec3::new(dw(0) * w(1) * w(2), w(0) * dw(1) * w(2), w(0) * w(1) * dw(2));
+                d += s * DVec3::new(
+                    dw(0) * w(1) * w(2),
+                    w(0) * dw(1) * w(2),
+                    w(0) * w(1) * dw(2),
+                );
             }
             values[k] = v;
             grads[k] = d / spec.cell;
@@ -98,7 +102,9 @@ fn every_cell_pattern_in_random_neighbourhoods() {
             let samples = SampleGrid::from_values(spec, values).unwrap();
             let field = Trilinear(&samples);
             let blocks = sources::dense_blocks(&field, &samples, 8, false);
-            split_polygons += contour::assemble(&blocks, &spec, 8, &contour::FieldProbe(&field)).specials.len();
+            split_polygons += contour::assemble(&blocks, &spec, 8, &contour::FieldProbe(&field))
+                .specials
+                .len();
             let dc = mesh_dc_samples(&field, &samples, None);
             let mc = mesh_samples(&samples);
             if mc.triangles.is_empty() {
