@@ -156,14 +156,15 @@ fn collapse(
         }
     }
     // Follow parents to the top collapsed node.
-    let mut map: Vec<u32> = (0..parent.len() as u32).collect();
-    for v in 0..parent.len() {
-        let mut r = v;
-        while parent[r] as usize != r {
-            r = parent[r] as usize;
-        }
-        map[v] = r as u32;
-    }
+    let map: Vec<u32> = (0..parent.len())
+        .map(|v| {
+            let mut r = v;
+            while parent[r] as usize != r {
+                r = parent[r] as usize;
+            }
+            r as u32
+        })
+        .collect();
     (map, nodes)
 }
 
@@ -325,11 +326,8 @@ pub(crate) fn bad_vertices(tris: &[[u32; 3]], vertex_count: usize) -> HashSet<u3
         }
         let mut at = l[0].0;
         let mut steps = 0;
-        loop {
-            match l.iter().find(|e| e.0 == at) {
-                Some(e) => at = e.1,
-                None => break,
-            }
+        while let Some(e) = l.iter().find(|e| e.0 == at) {
+            at = e.1;
             steps += 1;
             if at == l[0].0 || steps > l.len() {
                 break;

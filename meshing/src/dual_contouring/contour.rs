@@ -52,6 +52,9 @@ impl BlockIndex {
     }
 }
 
+/// One block's quads, and its polygons through split faces (with their crossing points).
+type BlockPolygons = (Vec<Quad>, Vec<(Vec<Corner>, DVec3)>);
+
 /// A split-face vertex: the face above `cell` along `axis`, and which of its two segments.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Hash)]
 pub(crate) struct FaceKey {
@@ -190,7 +193,7 @@ pub(crate) fn assemble<P: Probe>(
         bases: bases.clone(),
         block_size,
     };
-    let per_block: Vec<(Vec<Quad>, Vec<(Vec<Corner>, DVec3)>)> = blocks
+    let per_block: Vec<BlockPolygons> = blocks
         .par_iter()
         .map_init(P::Scratch::default, |scratch, b| {
             let mut quads = Vec::with_capacity(b.edges.len());

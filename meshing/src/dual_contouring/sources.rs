@@ -150,7 +150,7 @@ impl Signs for SparseSigns<'_> {
             for a in 0..3 {
                 let mut b = s[a] / bs;
                 if mask >> a & 1 == 1 {
-                    if s[a] % bs != 0 || b == 0 {
+                    if !s[a].is_multiple_of(bs) || b == 0 {
                         ok = false;
                         break;
                     }
