@@ -206,14 +206,29 @@ fn tangent_spheres() {
     }
 }
 
-#[test]
-fn gyroid_sphere_128() {
+fn gyroid_sphere_at(n: usize) {
     let s = gyroid_sphere();
     let p = s.compile();
-    let spec = GridSpec::covering(&solidkit_kernel::Aabb::centered(DVec3::ONE), 128).unwrap();
+    let spec = GridSpec::covering(&solidkit_kernel::Aabb::centered(DVec3::ONE), n).unwrap();
     let (dc, _) = mesh_dc(&p, spec, &DcOptions::default()).unwrap();
     let (mc, _) = mesh_sparse(&p, spec, &Default::default()).unwrap();
-    assert_dual_of_mc(&dc, &mc, "gyroid-sphere 128");
+    let r = assert_dual_of_mc(&dc, &mc, &format!("gyroid-sphere {n}"));
+    eprintln!(
+        "gyroid-sphere {n}³: {} triangles, {} shells, χ {}",
+        r.faces, r.shells, r.euler_characteristic
+    );
+}
+
+#[test]
+fn gyroid_sphere_128() {
+    gyroid_sphere_at(128);
+}
+
+/// The 256³ figure (`--ignored`; several seconds).
+#[test]
+#[ignore]
+fn gyroid_sphere_256() {
+    gyroid_sphere_at(256);
 }
 
 /// A smooth union (exp/log-like blend) of 20 random spheres.
