@@ -89,6 +89,8 @@ impl From<SchemeArg> for solidkit_meshing::subdivision::Scheme {
 pub enum Method {
     /// Marching cubes.
     Mc,
+    /// Manifold dual contouring (sharp features kept; `--tolerance` simplifies).
+    Dc,
 }
 
 /// Arguments of `solidkit mesh`.
@@ -105,6 +107,10 @@ pub struct MeshArgs {
     /// Polygonization method.
     #[arg(long, value_enum, default_value_t = Method::Mc)]
     pub method: Method,
+    /// Dual contouring only: collapse octree cells whose merged vertex stays within this
+    /// distance (model units) of the surface planes it replaces, where the topology allows.
+    #[arg(long, value_parser = parse_tolerance, allow_hyphen_values = true)]
+    pub tolerance: Option<f64>,
     /// Clip the solid to the box x0,y0,z0,x1,y1,z1 and mesh that (default: the solid's bounding
     /// box, unclipped). Needed for unbounded solids such as half-spaces.
     #[arg(long, value_parser = parse_bounds, allow_hyphen_values = true)]
@@ -214,6 +220,13 @@ pub struct BenchCaseArgs {
     /// Runs.
     #[arg(long, default_value_t = 5, value_parser = clap::value_parser!(u32).range(1..))]
     pub repeat: u32,
+}
+
+fn parse_tolerance(s: &str) -> Result<f64, String> {
+    match s.trim().parse::<f64>() {
+        Ok(t) if t.is_finite() && t > 0.0 => Ok(t),
+        _ => Err(format!("'{s}' is not a positive number")),
+    }
 }
 
 fn parse_bounds(s: &str) -> Result<[f64; 6], String> {

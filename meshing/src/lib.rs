@@ -5,6 +5,7 @@
 //! [`topology::TopologyReport`] and navigated as a [`halfedge::HalfEdgeMesh`].
 #![warn(missing_docs)]
 
+pub mod dual_contouring;
 pub mod halfedge;
 pub mod intersect;
 pub mod io;
