@@ -5,14 +5,18 @@
 //! [`topology::TopologyReport`] and navigated as a [`halfedge::HalfEdgeMesh`].
 #![warn(missing_docs)]
 
+pub mod dual_contouring;
 pub mod halfedge;
+pub mod intersect;
 pub mod io;
 pub mod marching_cubes;
+pub mod measure;
 pub mod octree;
 pub mod sink;
+pub mod subdivision;
 pub mod topology;
 
 pub use halfedge::HalfEdgeMesh;
 pub use sink::MeshSink;
 pub use solidkit_kernel::IndexedMesh;
-pub use topology::TopologyReport;
+pub use topology::{ReportOptions, TopologyReport};

@@ -2,8 +2,10 @@
 
 mod bench;
 mod check;
+mod compare;
 mod convert;
 mod mesh;
+mod subdivide;
 
 use crate::args::Command;
 use anyhow::Result;
@@ -14,7 +16,9 @@ pub fn run(command: Command) -> Result<u8> {
         Command::Mesh(a) => mesh::run(&a),
         Command::Check(a) => check::run(&a),
         Command::Convert(a) => convert::run(&a),
+        Command::Compare(a) => compare::run(&a),
         Command::Bench(a) => bench::run(&a),
         Command::BenchCase(a) => bench::run_case(&a),
+        Command::Subdivide(a) => subdivide::run(&a),
     }
 }

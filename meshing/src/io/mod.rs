@@ -10,21 +10,28 @@
 //!
 //! Writers go through [`write_atomic`]: a failed write leaves no partial file behind and an
 //! existing file untouched.
+//!
+//! [`read_polygon_mesh`] and [`write_polygon_mesh`] do the same for a [`PolygonMesh`], keeping
+//! polygonal faces where the format has them (OBJ, OFF, PLY).
 
 mod atomic;
 mod bytes;
 mod error;
+mod faces;
 mod obj;
 mod obj_scan;
 mod off;
 mod ply;
 mod ply_header;
 mod polygon;
+mod polygon_mesh;
 mod resolver;
 mod stl;
 mod text;
 mod weld;
 
+#[cfg(test)]
+mod polygon_mesh_tests;
 #[cfg(test)]
 mod tests;
 
@@ -36,6 +43,10 @@ use crate::IndexedMesh;
 pub use atomic::write_atomic;
 pub use error::{Location, MeshIoError};
 pub use polygon::{PolygonError, newell_normal, triangulate_polygon};
+pub use polygon_mesh::{
+    PolygonMesh, read_polygon_mesh, read_polygon_mesh_bytes, write_polygon_mesh,
+    write_polygon_mesh_with,
+};
 pub use resolver::FileMeshResolver;
 
 /// A mesh file format.
