@@ -100,3 +100,38 @@ def bbox(n: dict, base_dir, segments: int = 32):
     m = leaves.leaf(n, base_dir, segments, big=1.0)
     lo = m.bounding_box()
     return np.array(lo[:3]), np.array(lo[3:])
+
+
+CURVED = {"subdivide", "sphere", "cylinder", "cone", "torus", "ellipsoid", "elliptic_cylinder",
+          "elliptic_paraboloid", "hyperboloid_one_sheet", "revolve", "sweep", "extrude", "loft",
+          "ruled", "heightfield"}
+
+
+def curved_radius(n: dict, base_dir, scale: float = 1.0) -> float:
+    """The largest radius of the curved leaves of a subtree in world units (0 when every leaf
+    is flat-faced): what a faceted system's facet error scales with."""
+    t = n["type"]
+    kids = tree.children(n)
+    if t in tree.TRANSFORMS:
+        s = float(np.linalg.svd(tree.matrix(n)[:3, :3], compute_uv=False).max())
+        return curved_radius(kids[0], base_dir, scale * s)
+    if kids:
+        return max(curved_radius(k, base_dir, scale) for k in kids)
+    if t not in CURVED:
+        return 0.0
+    if t == "sphere":
+        r = float(n["radius"])
+    elif t == "cylinder":
+        r = float(n["radius"])
+    elif t == "cone":
+        r = max(float(n["bottom_radius"]), float(n["top_radius"]))
+    elif t == "torus":
+        r = float(n["major_radius"]) + float(n["minor_radius"])
+    elif t in ("extrude", "loft") and all(p.get("type") != "circle" for p in
+                                          (n.get("profile", {}), n.get("bottom", {}), n.get("top", {}))) \
+            and not float(n.get("twist", 0)):
+        return 0.0
+    else:
+        b = bbox(n, base_dir)
+        r = float(np.max(np.abs(np.concatenate(b)))) if b is not INF else 0.0
+    return r * scale

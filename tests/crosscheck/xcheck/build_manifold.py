@@ -15,7 +15,7 @@ from . import bounds, field, leaves, tree
 class Builder:
     def __init__(self, ctx):
         self.ctx = ctx
-        self.segments = int(ctx.param("manifold_segments", 128))
+        self.segments = int(ctx.param("manifold_segments", 256))
         self.edge = ctx.cell * float(ctx.param("manifold_edge", 1.5))
         self.level_sets = 0
         c = (ctx.box[0] + ctx.box[1]) / 2
@@ -64,7 +64,7 @@ def build(ctx) -> dict:
         "verts": verts, "faces": faces, "time_s": time.time() - start,
         "method": ("level_set + " if b.level_sets else "") + "exact Booleans",
         "grid": grid,
-        "facet_error": leaves.sagitta(ctx.diagonal / 2, b.segments),
+        "facet_error": leaves.sagitta(bounds.curved_radius(ctx.root, ctx.base_dir), b.segments),
         "own": {"volume": m.volume(), "area": m.surface_area(), "genus": m.genus(),
                 "shells": len(m.decompose())},
         "settings": {"segments": b.segments, "level_set_edge": b.edge if b.level_sets else None},

@@ -12,7 +12,7 @@ from pathlib import Path
 
 import numpy as np
 
-from . import leaves, meshio, tree
+from . import bounds, leaves, meshio, tree
 from .tree import NotExpressible
 
 NATIVE = {"sphere", "box", "cylinder", "cone", "torus", "extrude", "revolve", "prism"}
@@ -119,6 +119,6 @@ def build(ctx, work: Path, timeout: float) -> dict:
     return {
         "verts": verts, "faces": faces, "time_s": time.time() - start,
         "method": "CGAL Booleans" + (f", {w.polyhedra} polyhedron leaves" if w.polyhedra else ""),
-        "grid": 0.0, "facet_error": leaves.sagitta(ctx.diagonal / 2, w.fn),
+        "grid": 0.0, "facet_error": leaves.sagitta(bounds.curved_radius(ctx.root, ctx.base_dir), w.fn),
         "own": {}, "settings": {"fn": w.fn},
     }

@@ -119,7 +119,7 @@ def build(ctx) -> dict:
     return {
         "verts": points, "faces": faces, "time_s": time.time() - start,
         "method": "level-set CSG" + (" with sampled fields" if b.fields else "") + ", convertToPolygons",
-        "grid": b.vs, "facet_error": leaves.sagitta(ctx.diagonal / 2, b.segments),
+        "grid": b.vs, "facet_error": leaves.sagitta(bounds.curved_radius(ctx.root, ctx.base_dir), b.segments),
         "own": {}, "settings": {"voxel": b.vs, "segments": b.segments, "half_width": HALF_WIDTH,
                                 "grid_shape": list(b.shape)},
     }

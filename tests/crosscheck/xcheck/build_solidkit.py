@@ -26,7 +26,8 @@ def build(case: dict, work: Path, timeout: float) -> dict:
         "method": "sparse marching cubes", "facet_error": 0.0,
         "box": tuple(np.array(b, dtype=np.float64) for b in report["bbox"]),
         "own": {k: report.get(k) for k in ("volume", "area", "genus", "shells", "closed",
-                                           "manifold", "oriented", "vertices", "faces")},
+                                           "manifold", "oriented", "vertices", "faces",
+                                           "self_intersections")},
         "settings": {"resolution": case["resolution"], "command": " ".join(cmd)},
         "mesh_file": out,
     }

@@ -10,7 +10,7 @@ from pathlib import Path
 import manifold3d as mf
 import numpy as np
 
-from . import curves, meshio, tree
+from . import curves, meshio, subdivision, tree
 from .tree import NotExpressible
 
 PHI = (1 + 5 ** 0.5) / 2
@@ -36,8 +36,10 @@ def to_arrays(m: mf.Manifold):
 
 
 def sagitta(radius: float, segments: int) -> float:
-    """Largest distance between a circle of `radius` and its inscribed `segments`-gon."""
-    return radius * (1 - math.cos(math.pi / segments))
+    """A bound of the distance between a curved primitive of `radius` and its facets: the
+    sagitta of an inscribed polygon of half as many segments, 4× the circle's own, which covers
+    manifold3d's geodesic spheres (their faces sink up to 2.7× the circle's sagitta)."""
+    return radius * (1 - math.cos(2 * math.pi / segments))
 
 
 # ---- profiles -------------------------------------------------------------------------------
@@ -309,6 +311,30 @@ def quadric(n: dict, segments: int, samples: int) -> mf.Manifold:
     raise NotExpressible(f"quadric '{t}'")
 
 
+def polygon_mesh(n: dict, base_dir: Path):
+    """Vertices and polygon faces of a subdivide node's child."""
+    t = n["type"]
+    if t == "platonic":
+        v = platonic_vertices(n["solid"])
+        if "circumradius" in n:
+            r = float(n["circumradius"])
+        else:
+            d = np.linalg.norm(v[:, None] - v[None], axis=2)
+            r = float(n["edge"]) / d[d > 1e-9].min()
+        v = v * r
+        return v, subdivision.platonic_polygons(v)
+    if t == "polyhedron":
+        return np.array(n["vertices"], dtype=np.float64), [list(f) for f in n["faces"]]
+    if t == "mesh":
+        return meshio.read_polygons(Path(base_dir) / n["path"])
+    raise NotExpressible(f"subdivision of a '{t}' node")
+
+
+def subdivided(n: dict, base_dir: Path):
+    v, faces = polygon_mesh(n["child"], base_dir)
+    return subdivision.subdivide(v, faces, n["scheme"], n["levels"])
+
+
 # ---- the dispatcher ------------------------------------------------------------------------
 
 def leaf(n: dict, base_dir: Path, segments: int, big: float, detail: float = 1.0) -> mf.Manifold:
@@ -368,6 +394,8 @@ def leaf(n: dict, base_dir: Path, segments: int, big: float, detail: float = 1.0
         return mf.Manifold.revolve(cross_section(n["profile"], s), s, float(n.get("angle", 360)))
     if t == "sweep":
         return from_arrays(*tube(n, s, k(4)))
+    if t == "subdivide":
+        return from_arrays(*subdivided(n, base_dir))
     if t == "loft":
         return from_arrays(*loft(n, s))
     if t == "ruled":

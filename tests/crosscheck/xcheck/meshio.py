@@ -80,6 +80,29 @@ def read_obj(path) -> tuple:
     return np.array(verts, dtype=np.float64), _triangulate(polys)
 
 
+def read_polygons(path) -> tuple:
+    """Vertices and polygon faces (lists) of an OBJ or OFF file, faces as written."""
+    path = Path(path)
+    if path.suffix.lower() == ".obj":
+        verts, polys = [], []
+        for line in path.read_text().splitlines():
+            parts = line.split()
+            if parts and parts[0] == "v":
+                verts.append([float(x) for x in parts[1:4]])
+            elif parts and parts[0] == "f":
+                polys.append([int(p.split("/")[0]) - 1 for p in parts[1:]])
+        return np.array(verts, dtype=np.float64), polys
+    words = " ".join(l.split("#", 1)[0] for l in path.read_text().splitlines()).split()
+    nv, nf = int(words[1]), int(words[2])
+    verts = np.array(words[4:4 + 3 * nv], dtype=np.float64).reshape(nv, 3)
+    pos, polys = 4 + 3 * nv, []
+    for _ in range(nf):
+        k = int(words[pos])
+        polys.append([int(w) for w in words[pos + 1:pos + 1 + k]])
+        pos += 1 + k
+    return verts, polys
+
+
 def read_mesh(path) -> tuple:
     ext = Path(path).suffix.lower()
     if ext == ".stl":

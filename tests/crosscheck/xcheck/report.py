@@ -67,6 +67,7 @@ def write(selected, results, verdicts, elapsed, jobs):
     versions = _versions()
     doc = {"versions": versions, "elapsed_s": elapsed, "jobs": jobs,
            "tolerance": {"K_VOLUME": tolerance.K_VOLUME, "K_AREA": tolerance.K_AREA,
+                         "K_HAUSDORFF": tolerance.K_HAUSDORFF,
                          "rule": "docs/crosscheck.md"},
            "cases": [{"case": c, "results": results[c["name"]], "verdict": v}
                      for c, v in zip(selected, verdicts)]}

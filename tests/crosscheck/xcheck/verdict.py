@@ -64,8 +64,7 @@ class Judge:
         if metric == "area":
             return tolerance.area_tol(self.av, ga, gb, ea, eb)
         if metric == "hausdorff":
-            unc = (b.get("hausdorff") or {}).get("uncertainty", 0.0)
-            return tolerance.hausdorff_tol(ga, gb, ea, eb, unc)
+            return tolerance.hausdorff_tol(ga, gb, ea, eb)
         return None
 
     def agree(self, metric, va, vb, tol):
@@ -114,6 +113,9 @@ class Judge:
             return out
         m, own = sk["measures"], sk.get("own", {})
         # solidkit's own report against the STL it wrote (catches writer bugs)
+        si = own.get("self_intersections")
+        out.append(self._check("solidkit", "self_intersections", si in (0, None),
+                               f"solidkit's mesh has {si} self-intersecting triangle pairs"))
         for k in ("closed", "manifold", "oriented", "genus", "shells"):
             ok = own.get(k) == m.get(k)
             out.append(self._check("solidkit", f"self_{k}", ok,
