@@ -47,6 +47,9 @@ class Judge:
         self.case = case
         self.results = results
         self.exact = dict(case.get("exact", {}))
+        # every case is a solid: its exact boundary is a closed 2-manifold (tangent_spheres's
+        # pinch point is resolved by two shells, see its case)
+        self.exact.setdefault("closed_manifold", True)
         sk = results.get("solidkit", {})
         ok = sk.get("status") == "ok"
         self.area = self.exact.get("area") or (sk["measures"]["area"] if ok else None)
@@ -101,7 +104,9 @@ class Judge:
             return f"exact {_fmt(metric, x)}"
         errs.sort()
         best = [s for e, s, _ in errs if e == errs[0][0]]
-        return (f"exact {_fmt(metric, x)} ({self.exact.get('how', 'see cases.json')}): closest "
+        how = ("the boundary of a solid" if metric == "closed_manifold"
+               else self.exact.get("how", "see cases.json"))
+        return (f"exact {_fmt(metric, x)} ({how}): closest "
                 f"{' and '.join(best)}; " + ", ".join(t for _, _, t in errs))
 
     # -- checks ---------------------------------------------------------------------------------
