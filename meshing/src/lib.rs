@@ -10,6 +10,7 @@ pub mod io;
 pub mod marching_cubes;
 pub mod octree;
 pub mod sink;
+pub mod suites;
 pub mod topology;
 
 pub use halfedge::HalfEdgeMesh;

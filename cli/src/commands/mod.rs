@@ -3,10 +3,12 @@
 mod bench;
 mod check;
 mod convert;
+mod r#gen;
 mod mesh;
 
 use crate::args::Command;
 use anyhow::Result;
+pub use r#gen::GenArgs;
 
 /// Runs a subcommand; returns the process exit code.
 pub fn run(command: Command) -> Result<u8> {
@@ -14,6 +16,7 @@ pub fn run(command: Command) -> Result<u8> {
         Command::Mesh(a) => mesh::run(&a),
         Command::Check(a) => check::run(&a),
         Command::Convert(a) => convert::run(&a),
+        Command::Gen(a) => r#gen::run(&a),
         Command::Bench(a) => bench::run(&a),
         Command::BenchCase(a) => bench::run_case(&a),
     }
