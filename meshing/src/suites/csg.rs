@@ -14,7 +14,7 @@
 //! - `tangent_spheres`: two balls of radius 0.5 touching at the origin, meshed on a grid with a
 //!   sample at the origin (the field is exactly 0 there and counts as outside, so the mesh has two
 //!   shells a hair apart);
-//! - `thin_plates`: three parallel plates 0.05 thick (two cells at resolution 64).
+//! - `thin_plates`: three parallel plates 0.08 thick (three cells at resolution 64).
 //!
 //! By sampling ([`sample_volume`]): `gyroid_ball` (a gyroid sheet of period 1 cut by the unit
 //! ball) and `metaballs` (three merged Gaussian blobs); their topology is not stated.
@@ -70,10 +70,10 @@ fn recipes() -> Result<Vec<Recipe>, SuiteError> {
     let tri_area = 24.0 * (1.0 - s * s) + 48.0 * (s - 0.5f64.sqrt());
     let plates: Vec<Solid> = [-0.2, 0.0, 0.2]
         .iter()
-        .map(|&z| Solid::cuboid(DVec3::new(1.6, 1.6, 0.05)).translate(DVec3::Z * z))
+        .map(|&z| Solid::cuboid(DVec3::new(1.6, 1.6, 0.08)).translate(DVec3::Z * z))
         .collect();
-    let plate_volume = 3.0 * 1.6 * 1.6 * 0.05;
-    let plate_area = 3.0 * (2.0 * 1.6 * 1.6 + 4.0 * 1.6 * 0.05);
+    let plate_volume = 3.0 * 1.6 * 1.6 * 0.08;
+    let plate_area = 3.0 * (2.0 * 1.6 * 1.6 + 4.0 * 1.6 * 0.08);
     let gyroid = Solid::primitive(Primitive::Gyroid(Gyroid { thickness: 0.5 }))
         .scale_uniform(1.0 / (2.0 * PI));
     let balls = [
@@ -132,10 +132,10 @@ fn recipes() -> Result<Vec<Recipe>, SuiteError> {
         },
         Recipe {
             name: "thin_plates",
-            description: "three parallel 1.6 x 1.6 plates 0.05 thick at z = -0.2, 0, 0.2",
+            description: "three parallel 1.6 x 1.6 plates 0.08 thick at z = -0.2, 0, 0.2",
             solid: Solid::union_all(plates),
             truth: exact(plate_volume, plate_area, 3, 0)
-                .with_bbox([-0.8, -0.8, -0.225], [0.8, 0.8, 0.225]),
+                .with_bbox([-0.8, -0.8, -0.24], [0.8, 0.8, 0.24]),
             grid: Grid::Bounds,
         },
         Recipe {
