@@ -1,4 +1,4 @@
-//! The front ends through the real binary: `.rhai` scripts mesh like their `.json` twins, the
+//! The front ends through the real binary: `.rhai` scripts and OpenSCAD `.csg` exports mesh like their `.json` twins, the
 //! example scripts mesh closed and manifold with the expected genus, `convert` writes the tree,
 //! and a hostile script is stopped with a one-line located error.
 
@@ -30,16 +30,21 @@ fn mesh_report(input: &Path, out: Option<&Path>) -> Value {
 }
 
 #[test]
-fn the_same_model_as_rhai_and_json_meshes_identically() {
+fn the_same_model_as_rhai_json_and_csg_meshes_identically() {
     let dir = tempfile::tempdir().expect("temp dir");
-    let rhai_stl = dir.path().join("rhai.stl");
-    let json_stl = dir.path().join("json.stl");
-    mesh_report(&fixture("examples/ball_with_holes.rhai"), Some(&rhai_stl));
-    mesh_report(&fixture("examples/ball_with_holes.json"), Some(&json_stl));
-    let a = std::fs::read(&rhai_stl).expect("rhai mesh");
-    let b = std::fs::read(&json_stl).expect("json mesh");
-    assert!(!a.is_empty());
-    assert!(a == b, "the .rhai and .json meshes differ");
+    let mut meshes = Vec::new();
+    for ext in ["rhai", "json", "csg"] {
+        let stl = dir.path().join(format!("{ext}.stl"));
+        let input = fixture(&format!("examples/ball_with_holes.{ext}"));
+        let report = mesh_report(&input, Some(&stl));
+        assert_eq!(report["genus"], 5, "{ext}: {report}");
+        let bytes = std::fs::read(&stl).expect("mesh file");
+        assert!(bytes.len() > 84 + 50 * 1000, "{ext}: a real mesh");
+        meshes.push((ext, bytes));
+    }
+    for (ext, bytes) in &meshes[1..] {
+        assert!(*bytes == meshes[0].1, "the .{ext} and .rhai meshes differ");
+    }
 }
 
 #[test]

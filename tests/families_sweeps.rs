@@ -73,6 +73,24 @@ fn twisted_scaled_extrusion_has_the_frustum_volume() {
 }
 
 #[test]
+fn anisotropically_scaled_extrusion_has_its_volume_and_round_trips() {
+    let (a, b) = (0.4 - 1.0, 1.5 - 1.0);
+    let r = check(
+        "extrude_anisotropic.json",
+        1,
+        0,
+        0.6 * 1.2 * (1.0 + (a + b) / 2.0 + a * b / 3.0),
+    );
+    // The top face is 0.4 x 0.9, turned by 40 degrees.
+    let top = r.bbox[1][2];
+    assert!((top - 0.6).abs() < 0.02, "top at {top}");
+    let solid = load_tree("sweeps/extrude_anisotropic.json");
+    let text = solidkit_kernel::json::to_string(&solid);
+    assert!(text.contains("[0.4, 1.5]"), "{text}");
+    assert_eq!(solidkit_kernel::json::from_str(&text).unwrap(), solid);
+}
+
+#[test]
 fn revolution_of_an_off_axis_circle_is_a_torus() {
     check("revolve_torus.json", 1, 1, TAU * 1.0 * PI * 0.35 * 0.35);
 }

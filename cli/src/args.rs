@@ -27,6 +27,8 @@ pub enum Command {
     /// Write a suite of test solids with exact ground truth (one mesh per solid and
     /// manifest.json); exit 1 if a solid fails its own check.
     Gen(crate::commands::GenArgs),
+    /// Compare two meshes: key measures of each and their symmetric Hausdorff distance.
+    Compare(CompareArgs),
     /// Benchmark meshing of the standard models and print a table (time, rate, peak memory and
     /// the check of each mesh); exit 1 if a mesh fails its check.
     Bench(BenchArgs),
@@ -93,6 +95,21 @@ pub struct CheckArgs {
     /// The mesh file (.stl .obj .ply .off).
     pub mesh: PathBuf,
     /// Print the report as JSON.
+    #[arg(long)]
+    pub json: bool,
+}
+
+/// Arguments of `solidkit compare`.
+#[derive(Debug, clap::Args)]
+pub struct CompareArgs {
+    /// The first mesh (.stl .obj .ply .off); relative distances use its bounding-box diagonal.
+    pub a: PathBuf,
+    /// The second mesh.
+    pub b: PathBuf,
+    /// Area-weighted sample points per mesh (all vertices are sampled as well).
+    #[arg(long, default_value_t = 100_000)]
+    pub samples: usize,
+    /// Print JSON: {"a": report, "b": report, "hausdorff": {...}}.
     #[arg(long)]
     pub json: bool,
 }

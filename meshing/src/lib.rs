@@ -8,6 +8,7 @@
 pub mod halfedge;
 pub mod io;
 pub mod marching_cubes;
+pub mod measure;
 pub mod octree;
 pub mod sink;
 pub mod suites;

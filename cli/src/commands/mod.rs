@@ -2,6 +2,7 @@
 
 mod bench;
 mod check;
+mod compare;
 mod convert;
 mod r#gen;
 mod mesh;
@@ -17,6 +18,7 @@ pub fn run(command: Command) -> Result<u8> {
         Command::Check(a) => check::run(&a),
         Command::Convert(a) => convert::run(&a),
         Command::Gen(a) => r#gen::run(&a),
+        Command::Compare(a) => compare::run(&a),
         Command::Bench(a) => bench::run(&a),
         Command::BenchCase(a) => bench::run_case(&a),
     }

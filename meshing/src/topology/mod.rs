@@ -35,10 +35,11 @@ use std::borrow::Cow;
 use rayon::prelude::*;
 
 pub(crate) use edges::{CornerLoops, EdgeKind, EdgeTable};
+pub(crate) use measures::is_usable;
 pub(crate) use vertices::fan_counts;
 
 use crate::IndexedMesh;
-use measures::{Measures, is_usable};
+use measures::Measures;
 use shells::{ShellTally, Shells};
 
 /// The most offending items of each kind listed in [`Offenders`].

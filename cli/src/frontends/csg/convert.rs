@@ -6,7 +6,7 @@ use super::args::numbers;
 use super::error::CsgError;
 use super::facets;
 use super::flat::{Flat, Leaf2, Op2, profile};
-use super::hull::convex_hull;
+use super::hull::{convex_hull, convex_hull_2d};
 use super::parser::{Stmt, Tree, Value};
 use glam::{DVec2, DVec3};
 use solidkit_kernel::Solid;
@@ -225,12 +225,9 @@ fn node(stmt: &Stmt, children: Vec<Geom>, facets: Facets) -> Result<Geom, CsgErr
             let h = stmt.num("height", Some(0), 100.0)?;
             let twist = stmt.num("twist", None, 0.0)?;
             let scale = stmt.size2("scale", None, 1.0)?;
-            if scale.x != scale.y {
-                return Err(stmt.error("'scale': only uniform scale [s, s] is supported"));
-            }
             let centred = stmt.flag("center", None, false)?;
             let s = sweep(stmt, &flat, faceted, |p| {
-                Extrude::new(p, h, -twist, scale.x).map(|e| Primitive::Extrude(Arc::new(e)))
+                Extrude::with_scale(p, h, -twist, scale).map(|e| Primitive::Extrude(Arc::new(e)))
             })?;
             Ok(Geom::Solid(if centred {
                 s
@@ -368,6 +365,7 @@ fn is_identity(m: &[[f64; 4]; 3]) -> bool {
 fn hull(tree: &Tree, index: usize) -> Result<Geom, CsgError> {
     let stmt = &tree.nodes[index];
     let mut points = Vec::new();
+    let mut dims = Vec::new();
     let mut work: Vec<(usize, [[f64; 4]; 3])> = stmt
         .children
         .iter()
@@ -405,7 +403,14 @@ fn hull(tree: &Tree, index: usize) -> Result<Geom, CsgError> {
                 }
                 work.extend(s.children.iter().map(|&c| (c, prod)));
             }
-            "sphere" | "cylinder" | "cube" | "polyhedron" => local = primitive_points(s)?,
+            "sphere" | "cylinder" | "cube" | "polyhedron" => {
+                dims.push((s.pos, 3));
+                local = primitive_points(s)?;
+            }
+            "circle" | "square" | "polygon" => {
+                dims.push((s.pos, 2));
+                local = flat_points(s)?.into_iter().map(|p| p.extend(0.0)).collect();
+            }
             other => {
                 return Err(CsgError::Unsupported {
                     pos: s.pos,
@@ -418,8 +423,43 @@ fn hull(tree: &Tree, index: usize) -> Result<Geom, CsgError> {
     if points.is_empty() {
         return Ok(Geom::Empty);
     }
+    if let Some(&(pos, _)) = dims.iter().find(|d| d.1 != dims[0].1) {
+        return Err(CsgError::argument(pos, "hull", "mixes 2D and 3D children"));
+    }
+    if dims[0].1 == 2 {
+        let flat: Vec<DVec2> = points.iter().map(|p| p.truncate()).collect();
+        let ring = convex_hull_2d(&flat);
+        if ring.len() < 3 {
+            return Err(stmt.error("the points span no area"));
+        }
+        return Ok(Geom::Flat(Flat::leaf(Leaf2::Polygon(vec![ring]))));
+    }
     let (v, f) = convex_hull(&points).ok_or_else(|| stmt.error("the points span no volume"))?;
     Ok(Geom::Solid(polyhedron(stmt, v, f)?))
+}
+
+/// The points of a 2D primitive (circles faceted the OpenSCAD way), for `hull()`.
+fn flat_points(stmt: &Stmt) -> Result<Vec<DVec2>, CsgError> {
+    let Geom::Flat(f) = node(stmt, Vec::new(), Facets::OpenScad)? else {
+        return Ok(Vec::new());
+    };
+    let mut out = Vec::new();
+    for op in f.0 {
+        match op {
+            Op2::Leaf(Leaf2::Circle {
+                center,
+                radius,
+                res,
+            }) => out.extend(
+                facets::circle(radius, facets::fragments(radius, res))
+                    .into_iter()
+                    .map(|p| p + center),
+            ),
+            Op2::Leaf(Leaf2::Polygon(loops)) => out.extend(loops.into_iter().flatten()),
+            _ => {}
+        }
+    }
+    Ok(out)
 }
 
 /// The vertices of a primitive, round ones faceted the OpenSCAD way.

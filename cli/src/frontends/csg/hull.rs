@@ -1,7 +1,8 @@
-//! The 3D convex hull of a point set (incremental: each point outside the current hull replaces
-//! the faces it sees by a fan to their horizon), as vertices and outward triangles.
+//! Convex hulls of point sets: in 3D incremental (each point outside the current hull replaces
+//! the faces it sees by a fan to their horizon), as vertices and outward triangles; in 2D by
+//! Andrew's monotone chain, as a counter-clockwise ring.
 
-use glam::DVec3;
+use glam::{DVec2, DVec3};
 use std::collections::HashSet;
 
 /// A hull triangle, counter-clockwise seen from outside, with its plane `n · p = d`.
@@ -24,6 +25,37 @@ impl Face {
             alive: true,
         }
     }
+}
+
+/// The 2D convex hull of `points`, counter-clockwise without collinear corners (fewer than three
+/// corners when the points span no area).
+pub fn convex_hull_2d(points: &[DVec2]) -> Vec<DVec2> {
+    let mut p: Vec<DVec2> = points.iter().copied().filter(|q| q.is_finite()).collect();
+    p.sort_by(|a, b| a.x.total_cmp(&b.x).then(a.y.total_cmp(&b.y)));
+    p.dedup();
+    if p.len() < 3 {
+        return p;
+    }
+    let turn = |o: DVec2, a: DVec2, b: DVec2| (a - o).perp_dot(b - o);
+    let mut ring: Vec<DVec2> = Vec::with_capacity(2 * p.len());
+    for pass in 0..2 {
+        let start = ring.len();
+        let ordered: Box<dyn Iterator<Item = &DVec2>> = if pass == 0 {
+            Box::new(p.iter())
+        } else {
+            Box::new(p.iter().rev())
+        };
+        for &q in ordered {
+            while ring.len() >= start + 2
+                && turn(ring[ring.len() - 2], ring[ring.len() - 1], q) <= 0.0
+            {
+                ring.pop();
+            }
+            ring.push(q);
+        }
+        ring.pop();
+    }
+    ring
 }
 
 /// The hull's vertices and triangles, or `None` when the points span no volume.
@@ -118,6 +150,22 @@ mod tests {
             .map(|t| v[t[0] as usize].dot(v[t[1] as usize].cross(v[t[2] as usize])) / 6.0)
             .sum();
         assert!((vol - 1.0).abs() < 1e-12, "{vol}");
+    }
+
+    #[test]
+    fn hull_2d_of_square_corners_and_inner_points() {
+        let mut pts: Vec<DVec2> = [[0.0, 0.0], [2.0, 0.0], [2.0, 1.0], [0.0, 1.0], [1.0, 0.5]]
+            .map(DVec2::from)
+            .to_vec();
+        pts.push(DVec2::new(1.0, 0.0)); // collinear on an edge: dropped
+        let ring = convex_hull_2d(&pts);
+        assert_eq!(ring.len(), 4);
+        let area: f64 = (0..4)
+            .map(|i| ring[i].perp_dot(ring[(i + 1) % 4]))
+            .sum::<f64>()
+            / 2.0;
+        assert_eq!(area, 2.0, "counter-clockwise, area 2");
+        assert!(convex_hull_2d(&[DVec2::ZERO, DVec2::X, DVec2::X * 2.0]).len() < 3);
     }
 
     #[test]

@@ -36,9 +36,15 @@ impl Params<'_, '_> {
             "extrude" => {
                 let profile = self.sweep_profile("profile")?;
                 let twist = self.sweep_optional("twist", 0.0)?;
-                let scale = self.sweep_optional("scale", 1.0)?;
-                let e =
-                    Extrude::new(profile, self.number("height")?, twist, scale).map_err(located)?;
+                let scale = match super::find(self.entries, "scale") {
+                    None => DVec2::ONE,
+                    Some(i) => match self.reader.doc.values[i as usize] {
+                        Value::Number(s) => DVec2::splat(s),
+                        _ => self.sweep_point2(i, "scale")?,
+                    },
+                };
+                let e = Extrude::with_scale(profile, self.number("height")?, twist, scale)
+                    .map_err(located)?;
                 (
                     Primitive::Extrude(Arc::new(e)),
                     &["profile", "height", "twist", "scale"],

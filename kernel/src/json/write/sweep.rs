@@ -81,7 +81,11 @@ pub(super) fn extrude(e: &Extrude) -> String {
         profile(e.profile()),
         num(e.height()),
         num(e.twist()),
-        num(e.scale())
+        if e.scale().x == e.scale().y {
+            num(e.scale().x)
+        } else {
+            vec2(e.scale())
+        }
     )
 }
 

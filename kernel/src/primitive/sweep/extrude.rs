@@ -1,19 +1,23 @@
 //! Linear extrusion of a profile along z over `[−h/2, h/2]`, optionally twisted (the profile turns
 //! by `twist` degrees from bottom to top) and scaled (its size goes linearly from 1 at the bottom
-//! to `scale` at the top, about the z axis).
+//! to `scale` at the top, about the z axis; `scale` may differ along x and y, as OpenSCAD's
+//! `linear_extrude(scale = [sx, sy])`).
 //!
 //! Field. At height `z` (clamped to the slab) the slice is the profile scaled by
-//! `k(z) = 1 + (s − 1)(z + h/2)/h` and turned by `θ(z) = twist·(z + h/2)/h`, so its exact 2D
-//! distance is `σ = k·d(R(−θ) q / k)`. Without twist or scale the field is the exact prism distance
-//! `capped(σ, |z| − h/2)`. With them `σ` is not a distance in 3D: `|∂σ/∂q| = 1` and
-//! `|∂σ/∂z| ≤ |k'|·r_p + |θ'|·|q|` (`r_p` the largest radius of the profile; for a distance
-//! `|d(w) − ∇d·w|` is at most the norm of the nearest boundary point), so `σ/L` with
-//! `L = √(1 + (|k'| r_p + |θ'| R)²)` is 1-Lipschitz inside the cylinder `|q| ≤ R` of the solid's
-//! largest radius. Outside that cylinder a twisted extrusion evaluates the slice at the radial
-//! projection `π(q)` onto it and takes `max(·, |q| − R)`: a composition with a projection onto a
-//! convex set and a maximum of 1-Lipschitz functions, so the whole field is 1-Lipschitz and a
-//! distance bound (`|f| ≤` the distance to the surface), with the exact zero set
-//! (`field_error() = 0`).
+//! `k(z) = 1 + (s − 1)(z + h/2)/h` (per axis: `kx`, `ky`) and then turned by
+//! `θ(z) = twist·(z + h/2)/h`, so with `u = R(−θ) q` and `w = (u.x / kx, u.y / ky)` the value
+//! `σ = m·d(w)`, `m = min(kx, ky)`, has the slice as its zero set and `|∂σ/∂q| ≤ 1` (the map from
+//! the profile to the slice stretches by at least `m`); for a uniform scale it is the exact 2D
+//! distance. Without twist or scale the field is the exact prism distance
+//! `capped(σ, |z| − h/2)`. With them `σ` is not a distance in 3D: `|∂σ/∂q| ≤ 1` and
+//! `|∂σ/∂z| ≤ |k'|·r_p + |θ'|·|q| + |kx' − ky'|·|w|` (`r_p` the largest radius of the profile; for
+//! a distance `|d(w) − ∇d·w|` is at most the norm of the nearest boundary point; the last term only
+//! for a non-uniform scale), so `σ/L` with `L = √(1 + speed²)` is 1-Lipschitz inside the cylinder
+//! `|q| ≤ R` of the solid's largest radius (where `|w| ≤ R / min k`). Outside that cylinder a
+//! twisted or non-uniformly scaled extrusion evaluates the slice at the radial projection `π(q)`
+//! onto it and takes `max(·, |q| − R)`: a composition with a projection onto a convex set and a
+//! maximum of 1-Lipschitz functions, so the whole field is 1-Lipschitz and a distance bound
+//! (`|f| ≤` the distance to the surface), with the exact zero set (`field_error() = 0`).
 
 use super::combine::{capped, max, slab};
 use super::error::{SweepError, invalid, positive};
@@ -28,10 +32,10 @@ pub struct Extrude {
     profile: Profile,
     height: f64,
     twist: f64,
-    scale: f64,
-    /// `θ'` (radians per unit height) and `k'` (per unit height).
+    scale: DVec2,
+    /// `θ'` (radians per unit height) and `k'` per axis (per unit height).
     twist_rate: f64,
-    scale_rate: f64,
+    scale_rate: DVec2,
     /// The largest radius of the solid (the clamp cylinder of twisted extrusions).
     radius: f64,
     /// The slice field's Lipschitz constant `L ≥ 1`.
@@ -47,6 +51,17 @@ impl Extrude {
         twist: f64,
         scale: f64,
     ) -> Result<Extrude, SweepError> {
+        Self::with_scale(profile, height, twist, DVec2::splat(scale))
+    }
+
+    /// The extrusion of `profile` over height `height`, turned by `twist` degrees and scaled to
+    /// `scale.x` along x and `scale.y` along y at the top.
+    pub fn with_scale(
+        profile: Profile,
+        height: f64,
+        twist: f64,
+        scale: DVec2,
+    ) -> Result<Extrude, SweepError> {
         profile.validate().map_err(|error| SweepError::Profile {
             key: "profile",
             error,
@@ -55,12 +70,17 @@ impl Extrude {
         if !twist.is_finite() {
             return Err(invalid("twist", "expected a finite number"));
         }
-        positive("scale", scale)?;
+        positive("scale", scale.x)?;
+        positive("scale", scale.y)?;
         let twist_rate = twist.to_radians() / height;
         let scale_rate = (scale - 1.0) / height;
         let rp = profile.radius();
-        let radius = rp * scale.max(1.0);
-        let speed = scale_rate.abs() * rp + twist_rate.abs() * radius;
+        let radius = rp * scale.max_element().max(1.0);
+        let mut speed = scale_rate.abs().max_element() * rp + twist_rate.abs() * radius;
+        if scale.x != scale.y {
+            let k_min = scale.min_element().min(1.0);
+            speed += (scale_rate.x - scale_rate.y).abs() * radius / k_min;
+        }
         Ok(Extrude {
             profile,
             height,
@@ -88,9 +108,14 @@ impl Extrude {
         self.twist
     }
 
-    /// The size at the top relative to the bottom.
-    pub fn scale(&self) -> f64 {
+    /// The size at the top relative to the bottom, along x and y.
+    pub fn scale(&self) -> DVec2 {
         self.scale
+    }
+
+    /// Whether the scale differs along x and y.
+    fn anisotropic(&self) -> bool {
+        self.scale.x != self.scale.y
     }
 
     /// The Lipschitz constant `L` the slice distance is divided by (1 for a plain prism).
@@ -103,14 +128,17 @@ impl Extrude {
         0.0
     }
 
-    /// Exact volume: the slice area `A·k(z)²` integrated, `A·h·(1 + s + s²)/3` (twist keeps it).
+    /// Exact volume: the slice area `A·kx(z)·ky(z)` integrated,
+    /// `A·h·(1 + (α + β)/2 + αβ/3)` with `α = sx − 1`, `β = sy − 1` (`A·h·(1 + s + s²)/3` for a
+    /// uniform scale; twist keeps it).
     pub fn volume(&self) -> f64 {
-        let s = self.scale;
-        self.profile.area_centroid().0 * self.height * (1.0 + s + s * s) / 3.0
+        let (a, b) = (self.scale.x - 1.0, self.scale.y - 1.0);
+        self.profile.area_centroid().0 * self.height * (1.0 + (a + b) / 2.0 + a * b / 3.0)
     }
 
-    /// Scale and angle of the slice at height `z` (clamped to the slab).
-    pub(crate) fn slice_transform(&self, z: f64) -> (f64, f64) {
+    /// Scale (per axis) and angle of the slice at height `z` (clamped to the slab): the slice is
+    /// the profile scaled, then turned.
+    pub(crate) fn slice_transform(&self, z: f64) -> (DVec2, f64) {
         let s = z.clamp(-0.5 * self.height, 0.5 * self.height) + 0.5 * self.height;
         (1.0 + self.scale_rate * s, self.twist_rate * s)
     }
@@ -120,21 +148,32 @@ impl Extrude {
         let h2 = 0.5 * self.height;
         let q = DVec2::new(p.x, p.y);
         let rho = q.length();
-        let twisted = self.twist_rate != 0.0;
-        // Radial projection onto the clamp cylinder (twisted extrusions only).
-        let (qc, clamped) = if twisted && rho > self.radius {
+        let bounded = self.twist_rate != 0.0 || self.anisotropic();
+        // Radial projection onto the clamp cylinder (twisted or anisotropic extrusions only).
+        let (qc, clamped) = if bounded && rho > self.radius {
             (q * (self.radius / rho), true)
         } else {
             (q, false)
         };
         let (k, theta) = self.slice_transform(p.z);
         let (sin, cos) = theta.sin_cos();
-        let w = DVec2::new(cos * qc.x + sin * qc.y, -sin * qc.x + cos * qc.y) / k;
+        let u = DVec2::new(cos * qc.x + sin * qc.y, -sin * qc.x + cos * qc.y);
+        let w = u / k;
         let (d, g) = self.profile.distance_gradient(w);
-        let sigma = k * d;
-        let gq = DVec2::new(cos * g.x - sin * g.y, sin * g.x + cos * g.y);
+        // m = min(kx, ky) and its rate.
+        let (m, dm) = if k.x <= k.y {
+            (k.x, self.scale_rate.x)
+        } else {
+            (k.y, self.scale_rate.y)
+        };
+        let sigma = m * d;
+        // ∂σ/∂u, then turned back: ∂σ/∂q = R(θ) ∂σ/∂u.
+        let gu = g * m / k;
+        let gq = DVec2::new(cos * gu.x - sin * gu.y, sin * gu.x + cos * gu.y);
         let gz = if p.z.abs() < h2 {
-            self.scale_rate * (d - g.dot(w)) - k * self.twist_rate * g.dot(w.perp())
+            // ∂w/∂t = −(k'/k)·w − θ'·(−u.y, u.x)/k, per component.
+            let dw = -(self.scale_rate / k) * w - self.twist_rate * u.perp() / k;
+            dm * d + m * g.dot(dw)
         } else {
             0.0
         };
@@ -148,7 +187,7 @@ impl Extrude {
         };
         let slice = (sigma / l, DVec3::new(gq.x, gq.y, gz) / l);
         let f = capped(slice, slab(p.z, h2));
-        if twisted {
+        if bounded {
             let u = if rho > 0.0 { q / rho } else { DVec2::X };
             max(f, (rho - self.radius, DVec3::new(u.x, u.y, 0.0)))
         } else {
@@ -170,6 +209,7 @@ impl Shape for Extrude {
     fn bbox(&self) -> Aabb {
         let h2 = 0.5 * self.height;
         if self.twist_rate != 0.0 {
+            // The slice turns: the clamp cylinder bounds it.
             let r = self.radius;
             return Aabb::centered(DVec3::new(r, r, h2));
         }

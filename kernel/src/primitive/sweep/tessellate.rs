@@ -77,7 +77,7 @@ impl Extrude {
             |s, k| {
                 let z = -0.5 * h + h * s as f64 / levels as f64;
                 let (scale, theta) = self.slice_transform(z);
-                let q = DVec2::from_angle(theta).rotate(points[k]) * scale;
+                let q = DVec2::from_angle(theta).rotate(points[k] * scale);
                 DVec3::new(q.x, q.y, z)
             },
             [&tris, &tris],

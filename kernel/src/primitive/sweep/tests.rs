@@ -65,6 +65,21 @@ fn extrusions() -> Vec<Extrude> {
         )
         .unwrap(),
         Extrude::new(circle_at(DVec2::new(0.3, 0.1), 0.4), 1.0, -200.0, 1.6).unwrap(),
+        // OpenSCAD's `scale = [sx, sy]`: anisotropic, with and without twist.
+        Extrude::with_scale(
+            Profile::rectangle(DVec2::new(0.8, 0.5)).unwrap(),
+            1.0,
+            0.0,
+            DVec2::new(0.4, 1.5),
+        )
+        .unwrap(),
+        Extrude::with_scale(
+            circle_at(DVec2::new(0.2, 0.0), 0.3),
+            1.2,
+            75.0,
+            DVec2::new(1.8, 0.5),
+        )
+        .unwrap(),
     ]
 }
 
@@ -110,7 +125,7 @@ fn twisted_scaled_extrusion_has_the_right_inside() {
         let p = rng.vec(0.45);
         let (k, theta) = e.slice_transform(p.z);
         let w = DVec2::from_angle(-theta).rotate(DVec2::new(p.x, p.y)) / k;
-        let sigma = k * holed.distance(w);
+        let sigma = k.x * holed.distance(w);
         if sigma < 0.0 {
             let bound = (-sigma).min(0.5 - p.z.abs());
             assert!(-e.value(p) <= bound + 1e-12 && e.value(p) < 0.0);

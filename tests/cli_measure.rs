@@ -1,0 +1,136 @@
+//! The measurement commands through the real binary: `solidkit compare` (key measures of two
+//! meshes and their Hausdorff distance, the JSON keys the cross-check harness reads) and its
+//! error contract.
+
+use serde_json::Value;
+use solidkit_tests::fixture;
+use std::path::Path;
+use std::process::{Command, Output};
+
+fn solidkit(args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_solidkit"))
+        .args(args)
+        .output()
+        .expect("run solidkit")
+}
+
+fn path_str(p: &Path) -> &str {
+    p.to_str().expect("UTF-8 path")
+}
+
+fn compare_json(a: &Path, b: &Path, extra: &[&str]) -> Value {
+    let mut args = vec!["compare", path_str(a), path_str(b), "--json"];
+    args.extend_from_slice(extra);
+    let o = solidkit(&args);
+    assert_eq!(
+        o.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&o.stderr)
+    );
+    serde_json::from_slice(&o.stdout)
+        .unwrap_or_else(|e| panic!("{e}: {}", String::from_utf8_lossy(&o.stdout)))
+}
+
+/// The unit cube scaled by `s` about its centre, as OFF text.
+fn scaled_cube_off(s: f64) -> String {
+    let cube = std::fs::read_to_string(fixture("meshes/defects/cube.off")).unwrap();
+    let mut out = String::new();
+    let mut vertex_lines = 0;
+    for line in cube.lines() {
+        let numbers: Vec<f64> = line
+            .split_whitespace()
+            .map_while(|w| w.parse().ok())
+            .collect();
+        if numbers.len() == 3 && !line.starts_with('#') && vertex_lines < 9 {
+            // The first 3-number line is the counts; the next eight are vertices.
+            if vertex_lines > 0 {
+                let p = numbers.iter().map(|x| 0.5 + (x - 0.5) * s);
+                let p: Vec<String> = p.map(|x| x.to_string()).collect();
+                out.push_str(&p.join(" "));
+                out.push('\n');
+                vertex_lines += 1;
+                continue;
+            }
+            vertex_lines += 1;
+        }
+        out.push_str(line);
+        out.push('\n');
+    }
+    out
+}
+
+#[test]
+fn compare_reports_the_hausdorff_distance_of_a_scaled_cube() {
+    let dir = tempfile::tempdir().unwrap();
+    let big = dir.path().join("big.off");
+    std::fs::write(&big, scaled_cube_off(1.5)).unwrap();
+    let cube = fixture("meshes/defects/cube.off");
+    let v = compare_json(&cube, &big, &["--samples", "5000"]);
+    let (a, b, h) = (&v["a"], &v["b"], &v["hausdorff"]);
+    assert_eq!(a["closed"], true);
+    assert_eq!(b["genus"], 0);
+    assert!((a["volume"].as_f64().unwrap() - 1.0).abs() < 1e-12);
+    assert!((b["volume"].as_f64().unwrap() - 3.375).abs() < 1e-12);
+    let get = |k: &str| h[k].as_f64().unwrap_or_else(|| panic!("{k}: {h}"));
+    // Inner to outer: 1/4 everywhere; outer to inner: √3/4 at the corners.
+    assert!((get("a_to_b") - 0.25).abs() < 1e-12, "{h}");
+    assert!((get("mean_a_to_b") - 0.25).abs() < 1e-12, "{h}");
+    assert!((get("b_to_a") - 3f64.sqrt() / 4.0).abs() < 1e-12, "{h}");
+    assert!(get("mean_b_to_a") > 0.25 && get("mean_b_to_a") < get("b_to_a"));
+    assert_eq!(get("symmetric"), get("b_to_a"));
+    assert!((get("diagonal") - 3f64.sqrt()).abs() < 1e-12);
+    assert!((get("relative") - 0.25).abs() < 1e-12);
+    assert_eq!(h["samples"], 5000);
+    assert_eq!(
+        (h["points_a"].as_u64(), h["points_b"].as_u64()),
+        (Some(5008), Some(5008))
+    );
+}
+
+#[test]
+fn compare_measures_open_meshes_and_exits_zero() {
+    // The cube against itself less one triangle of its x = 1 side (legs 1): the deepest point of the missing
+    // triangle is its incentre, (2 − √2)/2 from the rest of the cube.
+    let (cube, hole) = (
+        fixture("meshes/defects/cube.off"),
+        fixture("meshes/defects/cube_hole.off"),
+    );
+    let v = compare_json(&cube, &hole, &[]);
+    let h = &v["hausdorff"];
+    assert_eq!(v["b"]["closed"], false);
+    assert!(h["b_to_a"].as_f64().unwrap() < 1e-12, "{h}");
+    let inradius = (2.0 - 2f64.sqrt()) / 2.0;
+    let a_to_b = h["a_to_b"].as_f64().unwrap();
+    assert!(a_to_b <= inradius + 1e-12 && a_to_b > 0.27, "{h}");
+    // The text form names both files and the distance.
+    let o = solidkit(&[
+        "compare",
+        path_str(&cube),
+        path_str(&hole),
+        "--samples",
+        "100",
+    ]);
+    assert_eq!(o.status.code(), Some(0));
+    let text = String::from_utf8_lossy(&o.stdout);
+    assert!(
+        text.contains("cube_hole.off") && text.contains("hausdorff:"),
+        "{text}"
+    );
+}
+
+#[test]
+fn compare_rejects_bad_input_with_exit_two() {
+    let dir = tempfile::tempdir().unwrap();
+    let cube = fixture("meshes/defects/cube.off");
+    let flat = dir.path().join("collapsed.off");
+    std::fs::write(&flat, "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 1\n").unwrap();
+    let missing = dir.path().join("missing.stl");
+    for (b, phrase) in [(&flat, "no usable triangles"), (&missing, "missing.stl")] {
+        let o = solidkit(&["compare", path_str(&cube), path_str(b)]);
+        let err = String::from_utf8_lossy(&o.stderr);
+        assert_eq!(o.status.code(), Some(2), "{err}");
+        assert_eq!(err.trim_end().lines().count(), 1, "{err}");
+        assert!(err.contains(phrase) && err.contains(path_str(b)), "{err}");
+    }
+}
