@@ -64,7 +64,7 @@ pub struct Encoded {
 }
 
 /// Encodes `solid` in `format` and measures the mesh as stored (see
-/// [`stored_mesh`](crate::io::stored_mesh)): files named `NAME.EXT` and `NAME.json`.
+/// [`stored_mesh`]): files named `NAME.EXT` and `NAME.json`.
 pub fn encode(solid: &GenSolid, format: MeshFormat) -> Result<Encoded, MeshIoError> {
     let file = format!("{}.{}", solid.name, format.extension());
     let opts = WriteOptions {
