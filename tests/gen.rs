@@ -434,9 +434,12 @@ fn smooth_counts_and_chord_error_bounds() {
         let mesh = read_mesh(&dir.path().join(s["file"].as_str().expect("file"))).expect("mesh");
         let distance: Option<Box<dyn Fn(DVec3) -> f64>> = match name {
             "sphere" => Some(Box::new(|p: DVec3| (p.length() - 1.0).abs())),
-            "torus" => Some(Box::new(|p: DVec3| {
-                (DVec3::new(p.truncate().length() - 1.0, 0.0, p.z).length() - 0.35).abs()
-            })),
+            "torus" | "swept_tube" => {
+                let minor = if name == "torus" { 0.35 } else { 0.3 };
+                Some(Box::new(move |p: DVec3| {
+                    (DVec3::new(p.truncate().length() - 1.0, 0.0, p.z).length() - minor).abs()
+                }))
+            }
             "cylinder_extruded" => Some(Box::new(|p: DVec3| {
                 // Distance to the side or to a cap, whichever is nearer.
                 (p.truncate().length() - 0.6)

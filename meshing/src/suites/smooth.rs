@@ -10,6 +10,12 @@
 //!   `ρ_max (1 − cos(Δ/2))`; volume and area by Pappus (exact for straight profile edges);
 //! - a cylinder as an extruded circle (the circle sampled at the segments): error
 //!   `r (1 − cos(π/n))`;
+//! - a tube swept along a closed path (a circle of radius 0.3 along the exact NURBS circle of
+//!   radius 1 with rotation-minimising frames: a torus, whose stations are not evenly spaced in
+//!   angle): every mesh vertex lies on the torus `p(θ, φ)`, and linear interpolation of `p` over a
+//!   triangle of parameter circumradius `ρ` is within `½ |D²p| ρ²` of it (Taylor at each corner,
+//!   weighted by the barycentric coordinates: `Σ λᵢ |x − xᵢ|² = ρ² − |x − o|²`), with
+//!   `|D²p| ≤ R + 2r`; the bound is the largest over the triangles, from the vertices' parameters;
 //! - a Bézier height field: volume and side areas exact (a Bernstein polynomial's integral is the
 //!   mean of its coefficients), top area by quadrature, chord error from the Hessian bound.
 //!
@@ -21,11 +27,12 @@ use super::{GenSolid, SuiteError, build_error};
 use crate::IndexedMesh;
 use glam::{DVec2, DVec3};
 use serde_json::json;
+use solidkit_kernel::curve::{Curve, Nurbs};
 use solidkit_kernel::primitive::heightfield::{HeightGrid, HeightSource};
-use solidkit_kernel::primitive::{Extrude, HeightField, Revolve};
+use solidkit_kernel::primitive::{Extrude, HeightField, Revolve, Sweep};
 use solidkit_kernel::profile::Profile;
 use solidkit_kernel::tessellate;
-use std::f64::consts::PI;
+use std::f64::consts::{PI, TAU};
 
 /// The suite's solids with `segments` around a full turn.
 pub fn solids(segments: usize) -> Result<Vec<GenSolid>, SuiteError> {
@@ -38,6 +45,7 @@ pub fn solids(segments: usize) -> Result<Vec<GenSolid>, SuiteError> {
         revolve(n, 360.0)?,
         revolve(n, 270.0)?,
         cylinder(n)?,
+        swept_tube(n)?,
         heightfield(n)?,
     ])
 }
@@ -82,7 +90,7 @@ fn sphere(n: usize) -> Result<GenSolid, SuiteError> {
     let (r, nu, nv) = (1.0, n + 1, half(n));
     let t = tessellate::sphere(r, nu, nv).map_err(|e| build_error("sphere", e))?;
     let truth = exact(4.0 / 3.0 * PI * r * r * r, 4.0 * PI * r * r)
-        .with_topology(1, 0, TruthMethod::ClosedForm)
+        .with_topology(1, 0, TruthMethod::Construction)
         .with_closed_counts((2 * (nu - 1) * (nv - 2)) as u64)
         .with_bbox([-r; 3], [r; 3]);
     Ok(smooth(
@@ -107,7 +115,7 @@ fn ellipsoid(n: usize) -> Result<GenSolid, SuiteError> {
         area: Some(Quantity::quadrature(area, area_err)),
         ..Truth::default()
     }
-    .with_topology(1, 0, TruthMethod::ClosedForm)
+    .with_topology(1, 0, TruthMethod::Construction)
     .with_closed_counts((2 * (nu - 1) * (nv - 2)) as u64)
     .with_bbox((-radii).to_array(), radii.to_array());
     Ok(smooth(
@@ -128,7 +136,7 @@ fn capsule(n: usize) -> Result<GenSolid, SuiteError> {
         PI * r * r * length + 4.0 / 3.0 * PI * r * r * r,
         2.0 * PI * r * length + 4.0 * PI * r * r,
     )
-    .with_topology(1, 0, TruthMethod::ClosedForm)
+    .with_topology(1, 0, TruthMethod::Construction)
     .with_closed_counts((2 * (nu - 1) * (nv - 1)) as u64)
     .with_bbox([-r, -r, -r - length / 2.0], [r, r, r + length / 2.0]);
     Ok(smooth(
@@ -149,7 +157,7 @@ fn torus(n: usize) -> Result<GenSolid, SuiteError> {
         2.0 * PI * PI * major * minor * minor,
         4.0 * PI * PI * major * minor,
     )
-    .with_topology(1, 1, TruthMethod::ClosedForm)
+    .with_topology(1, 1, TruthMethod::Construction)
     .with_closed_counts((2 * (nu - 1) * (nv - 1)) as u64)
     .with_bbox(
         [-major - minor, -major - minor, -minor],
@@ -216,7 +224,7 @@ fn revolve(n: usize, degrees: f64) -> Result<GenSolid, SuiteError> {
         (0, 2 * (steps - 1) * k + 2 * (k - 2))
     };
     let mut truth = exact(solid.volume(), area)
-        .with_topology(1, genus, TruthMethod::ClosedForm)
+        .with_topology(1, genus, TruthMethod::Construction)
         .with_closed_counts(faces as u64);
     if full {
         truth = truth.with_bbox([-rho_max, -rho_max, -0.3], [rho_max, rho_max, 0.35]);
@@ -241,7 +249,7 @@ fn cylinder(n: usize) -> Result<GenSolid, SuiteError> {
     let solid = Extrude::new(profile, h, 0.0, 1.0).map_err(|e| build_error(name, e))?;
     let mesh = solid.tessellate(n, 1).map_err(|e| build_error(name, e))?;
     let truth = exact(PI * r * r * h, 2.0 * PI * r * r + 2.0 * PI * r * h)
-        .with_topology(1, 0, TruthMethod::ClosedForm)
+        .with_topology(1, 0, TruthMethod::Construction)
         .with_closed_counts((4 * n - 4) as u64)
         .with_bbox([-r, -r, -h / 2.0], [r, r, h / 2.0]);
     Ok(smooth(
@@ -252,6 +260,77 @@ fn cylinder(n: usize) -> Result<GenSolid, SuiteError> {
         truth,
         Some(r * (1.0 - (PI / n as f64).cos())),
     ))
+}
+
+fn swept_tube(n: usize) -> Result<GenSolid, SuiteError> {
+    let (major, minor) = (1.0, 0.3);
+    let name = "swept_tube";
+    let segments = half(n) - 1;
+    let path = Nurbs::circle(DVec3::ZERO, major).map_err(|e| build_error(name, e))?;
+    let profile = Profile::circle(minor).map_err(|e| build_error(name, e))?;
+    let solid = Sweep::new(profile, Curve::Nurbs(path)).map_err(|e| build_error(name, e))?;
+    let mesh = solid
+        .tessellate(segments, n)
+        .map_err(|e| build_error(name, e))?;
+    let bound = torus_chord_bound(&mesh, major, minor);
+    let truth = exact(
+        2.0 * PI * PI * major * minor * minor,
+        4.0 * PI * PI * major * minor,
+    )
+    .with_topology(1, 1, TruthMethod::Construction)
+    .with_closed_counts((2 * n * segments) as u64)
+    .with_bbox(
+        [-major - minor, -major - minor, -minor],
+        [major + minor, major + minor, minor],
+    );
+    Ok(smooth(
+        name,
+        format!(
+            "circle of radius {minor} swept along the NURBS circle of radius {major} in the xy plane (a torus), {n} stations, {segments} segments"
+        ),
+        json!({"path": "nurbs circle", "path_radius": major, "profile_radius": minor, "stations": n, "segments": segments}),
+        mesh,
+        truth,
+        bound,
+    ))
+}
+
+/// The chord bound of a mesh whose vertices lie on the torus with radii `major`, `minor`:
+/// `½ (R + 2r) ρ²` for the largest parameter circumradius `ρ` of a triangle (see the module
+/// docs); `None` if a vertex is off the torus or a triangle is degenerate in parameters.
+fn torus_chord_bound(mesh: &IndexedMesh, major: f64, minor: f64) -> Option<f64> {
+    let params: Vec<DVec2> = mesh
+        .positions
+        .iter()
+        .map(|p| {
+            let rho = p.truncate().length() - major;
+            DVec2::new(p.y.atan2(p.x), p.z.atan2(rho))
+        })
+        .collect();
+    let on_torus = mesh.positions.iter().all(|p| {
+        let d = DVec2::new(p.truncate().length() - major, p.z).length() - minor;
+        d.abs() < 1e-12
+    });
+    if !on_torus {
+        return None;
+    }
+    let unwrap = |a: f64, reference: f64| a - TAU * ((a - reference) / TAU).round();
+    let mut worst = 0.0f64;
+    for t in &mesh.triangles {
+        let first = params[t[0] as usize];
+        let [a, b, c] = t.map(|i| {
+            let q = params[i as usize];
+            DVec2::new(unwrap(q.x, first.x), unwrap(q.y, first.y))
+        });
+        // Circumradius: |ab| |bc| |ca| / (4 · area).
+        let area2 = (b - a).perp_dot(c - a).abs();
+        if area2 <= 0.0 {
+            return None;
+        }
+        let r = a.distance(b) * b.distance(c) * c.distance(a) / (2.0 * area2);
+        worst = worst.max(r);
+    }
+    Some(0.5 * (major + 2.0 * minor) * worst * worst)
 }
 
 /// Control heights of the height field's bicubic Bézier patch (`[i][j]`, `i` along x).
@@ -299,7 +378,7 @@ fn heightfield(n: usize) -> Result<GenSolid, SuiteError> {
         area: Some(Quantity::quadrature(top + sides + size.x * size.y, top_err)),
         ..Truth::default()
     }
-    .with_topology(1, 0, TruthMethod::ClosedForm)
+    .with_topology(1, 0, TruthMethod::Construction)
     .with_closed_counts((4 * (samples - 1) * (samples - 1) + 8 * (samples - 1)) as u64);
     truth =
         truth.with_note("bounding box not stated: the patch's highest point has no closed form");
