@@ -113,3 +113,42 @@ pub(super) fn write(out: &mut dyn Write, mesh: &IndexedMesh) -> io::Result<()> {
     }
     Ok(())
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use glam::DVec3;
+
+    fn glb(mesh: &IndexedMesh) -> Vec<u8> {
+        let mut out = Vec::new();
+        write(&mut out, mesh).unwrap();
+        out
+    }
+
+    #[test]
+    fn header_and_chunks_are_aligned_and_sized() {
+        let tri = IndexedMesh::new(vec![DVec3::ZERO, DVec3::X, DVec3::Y], vec![[0, 1, 2]]);
+        let bytes = glb(&tri);
+        let le32 = |at: usize| u32::from_le_bytes(bytes[at..at + 4].try_into().unwrap());
+        assert_eq!(le32(0), MAGIC);
+        assert_eq!(le32(8) as usize, bytes.len());
+        let json_len = le32(12) as usize;
+        assert_eq!(json_len % 4, 0);
+        assert_eq!(
+            le32(20 + json_len) as usize,
+            3 * 12 + 12,
+            "positions and indices"
+        );
+        assert_eq!(bytes.len(), 20 + json_len + 8 + 48);
+        assert_eq!(glb(&tri), bytes, "same mesh, same bytes");
+    }
+
+    #[test]
+    fn empty_mesh_has_no_buffer_and_huge_coordinates_are_refused() {
+        let bytes = glb(&IndexedMesh::default());
+        let text = std::str::from_utf8(&bytes[20..]).unwrap();
+        assert!(text.trim_end().ends_with('}') && !text.contains("buffers"));
+        let far = IndexedMesh::new(vec![DVec3::splat(1e39)], vec![]);
+        assert!(check_writable(&far).unwrap_err().contains("32-bit"));
+    }
+}

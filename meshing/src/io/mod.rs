@@ -99,11 +99,6 @@ impl MeshFormat {
             MeshFormat::Glb => "glb",
         }
     }
-
-    /// True for the formats [`read_mesh`] reads (all but 3MF and GLB).
-    pub fn is_readable(self) -> bool {
-        !matches!(self, MeshFormat::ThreeMf | MeshFormat::Glb)
-    }
 }
 
 /// Binary or text encoding, for the formats that have both (STL and PLY); OBJ and OFF are always

@@ -88,3 +88,30 @@ pub(super) fn write(out: &mut dyn Write, mesh: &IndexedMesh) -> io::Result<()> {
         ],
     )
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use glam::DVec3;
+
+    #[test]
+    fn coordinates_are_plain_decimals_that_read_back_exactly() {
+        let p = DVec3::new(0.1, -1e-7, 123_456_789.125);
+        let mesh = IndexedMesh::new(vec![p, DVec3::X, DVec3::Y], vec![[0, 1, 2]]);
+        let xml = String::from_utf8(model_xml(&mesh).unwrap()).unwrap();
+        let tag = xml.lines().find(|l| l.contains("<vertex")).unwrap();
+        assert_eq!(
+            tag.trim(),
+            r#"<vertex x="0.1" y="-0.0000001" z="123456789.125"/>"#
+        );
+        let back: Vec<f64> = tag
+            .split('"')
+            .skip(1)
+            .step_by(2)
+            .map(|v| v.parse().unwrap())
+            .collect();
+        assert_eq!(back, p.to_array());
+        assert!(xml.contains(r#"<triangle v1="0" v2="1" v3="2"/>"#));
+        assert!(xml.contains(r#"unit="millimeter""#) && xml.contains(r#"<item objectid="1"/>"#));
+    }
+}
