@@ -22,7 +22,7 @@ fn path_str(p: &Path) -> &str {
     p.to_str().expect("UTF-8 path")
 }
 
-const KEYS: [&str; 16] = [
+const KEYS: [&str; 17] = [
     "vertices",
     "edges",
     "faces",
@@ -39,6 +39,7 @@ const KEYS: [&str; 16] = [
     "volume",
     "area",
     "bbox",
+    "self_intersections",
 ];
 
 #[test]
@@ -67,6 +68,7 @@ fn mesh_writes_the_file_and_reports_stable_keys() {
     }
     assert_eq!(r["genus"], 1);
     assert_eq!(r["euler_characteristic"], 0);
+    assert_eq!(r["self_intersections"], 0);
     assert_eq!(r["resolution"], 64);
     assert!(r["bbox"][0].as_array().unwrap().len() == 3);
     // The written mesh checks clean and has the same counts.

@@ -1,6 +1,6 @@
 //! The measurement commands through the real binary: `solidkit compare` (key measures of two
 //! meshes and their Hausdorff distance, the JSON keys the cross-check harness reads) and its
-//! error contract.
+//! error contract; self-intersections in `check` and `mesh` (exit code, `--no-self-intersections`).
 
 use serde_json::Value;
 use solidkit_tests::fixture;
@@ -133,4 +133,55 @@ fn compare_rejects_bad_input_with_exit_two() {
         assert_eq!(err.trim_end().lines().count(), 1, "{err}");
         assert!(err.contains(phrase) && err.contains(path_str(b)), "{err}");
     }
+}
+
+#[test]
+fn check_fails_a_self_intersecting_mesh_unless_skipped() {
+    let file = fixture("meshes/defects/self_intersecting.off");
+    let o = solidkit(&["check", path_str(&file), "--json"]);
+    assert_eq!(o.status.code(), Some(1));
+    let r: Value = serde_json::from_slice(&o.stdout).unwrap();
+    // Topologically sound (two closed cubes), but crossing.
+    assert_eq!(
+        (r["closed"].as_bool(), r["manifold"].as_bool()),
+        (Some(true), Some(true))
+    );
+    let count = r["self_intersections"].as_u64().unwrap();
+    let pairs = r["examples"]["self_intersections"].as_array().unwrap();
+    assert!(count > 0 && !pairs.is_empty() && pairs.len() as u64 <= count);
+    let text = solidkit(&["check", path_str(&file)]);
+    assert_eq!(text.status.code(), Some(1));
+    assert!(String::from_utf8_lossy(&text.stdout).contains("intersecting faces:"));
+
+    let skipped = solidkit(&[
+        "check",
+        path_str(&file),
+        "--json",
+        "--no-self-intersections",
+    ]);
+    assert_eq!(skipped.status.code(), Some(0));
+    let r: Value = serde_json::from_slice(&skipped.stdout).unwrap();
+    assert!(r["self_intersections"].is_null());
+    let clean = solidkit(&[
+        "check",
+        path_str(&fixture("meshes/defects/cube.off")),
+        "--json",
+    ]);
+    assert_eq!(clean.status.code(), Some(0));
+    let r: Value = serde_json::from_slice(&clean.stdout).unwrap();
+    assert_eq!(r["self_intersections"], 0);
+}
+
+#[test]
+fn mesh_counts_self_intersections_unless_skipped() {
+    let tree = fixture("trees/torus.json");
+    let run = |extra: &[&str]| {
+        let mut args = vec!["mesh", path_str(&tree), "--resolution", "32", "--json"];
+        args.extend_from_slice(extra);
+        let o = solidkit(&args);
+        assert_eq!(o.status.code(), Some(0));
+        serde_json::from_slice::<Value>(&o.stdout).unwrap()
+    };
+    assert_eq!(run(&[])["self_intersections"], 0);
+    assert!(run(&["--no-self-intersections"])["self_intersections"].is_null());
 }

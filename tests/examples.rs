@@ -1,6 +1,6 @@
 //! Every example in `fixtures/examples/` (`.json`, `.rhai`, `.csg`) meshed through the real binary
-//! at resolution 96: closed, manifold, oriented, with the shell count and genus its own
-//! `expect: shells=N genus=G` line states.
+//! at resolution 96: closed, manifold, oriented, free of self-intersections, with the shell count
+//! and genus its own `expect: shells=N genus=G` line states.
 
 use serde_json::Value;
 use solidkit_tests::fixture;
@@ -67,6 +67,9 @@ fn check(path: &Path) -> Result<(), String> {
     }
     if r["genus"] != genus {
         problems.push(format!("genus = {}, expected {genus}", r["genus"]));
+    }
+    if r["self_intersections"] != 0 {
+        problems.push(format!("self_intersections = {}", r["self_intersections"]));
     }
     if problems.is_empty() {
         Ok(())

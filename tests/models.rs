@@ -14,7 +14,9 @@ use solidkit_tests::{fixture, rel_err};
 fn mesh_over(solid: &Solid, domain: &Aabb, n: usize) -> TopologyReport {
     let spec = GridSpec::covering(domain, n).expect("grid");
     let (mesh, _) = mesh_sparse(&solid.compile(), spec, &SparseOptions::default()).expect("mesh");
-    TopologyReport::of(&mesh)
+    let r = TopologyReport::of(&mesh);
+    assert_eq!(r.self_intersections, Some(0), "{:?}", r.examples);
+    r
 }
 
 fn menger_domain() -> Aabb {

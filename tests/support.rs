@@ -24,12 +24,21 @@ pub fn load_tree(rel: &str) -> Solid {
 }
 
 /// Meshes a solid by (sparse) marching cubes at `resolution` cells along its longest side, as
-/// `solidkit mesh` does.
+/// `solidkit mesh` does. Every such mesh is also checked to have no self-intersection (marching
+/// cubes never folds a surface onto itself).
 pub fn mesh(solid: &Solid, resolution: usize) -> (IndexedMesh, TopologyReport) {
     let spec = GridSpec::for_bounds(&solid.bbox(), resolution).expect("bounded solid");
     let (mesh, _) =
         mesh_sparse(&solid.compile(), spec, &SparseOptions::default()).expect("not cancelled");
     let report = TopologyReport::of(&mesh);
+    assert_eq!(
+        (
+            report.self_intersections,
+            &report.examples.self_intersections
+        ),
+        (Some(0), &Vec::new()),
+        "self-intersecting marching-cubes mesh"
+    );
     (mesh, report)
 }
 

@@ -20,7 +20,7 @@ pub enum Command {
     /// Mesh a solid and print its topology report.
     Mesh(MeshArgs),
     /// Read a mesh (STL, OBJ, PLY, OFF) and print its topology report; exit 1 unless it is a
-    /// closed oriented 2-manifold.
+    /// closed oriented 2-manifold without self-intersections.
     Check(CheckArgs),
     /// Write the JSON tree of any input (.json, .rhai, .csg).
     Convert(ConvertArgs),
@@ -69,6 +69,9 @@ pub struct MeshArgs {
     /// or faceted exactly as OpenSCAD does.
     #[arg(long, value_enum, default_value_t = FacetsArg::Exact)]
     pub facets: FacetsArg,
+    /// Skip the self-intersection count of the report.
+    #[arg(long)]
+    pub no_self_intersections: bool,
 }
 
 /// `--facets`: round primitives of `.csg` inputs.
@@ -97,6 +100,9 @@ pub struct CheckArgs {
     /// Print the report as JSON.
     #[arg(long)]
     pub json: bool,
+    /// Skip the self-intersection count (a self-intersecting mesh then passes).
+    #[arg(long)]
+    pub no_self_intersections: bool,
 }
 
 /// Arguments of `solidkit compare`.

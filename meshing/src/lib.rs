@@ -6,6 +6,7 @@
 #![warn(missing_docs)]
 
 pub mod halfedge;
+pub mod intersect;
 pub mod io;
 pub mod marching_cubes;
 pub mod measure;
@@ -17,4 +18,4 @@ pub mod topology;
 pub use halfedge::HalfEdgeMesh;
 pub use sink::MeshSink;
 pub use solidkit_kernel::IndexedMesh;
-pub use topology::TopologyReport;
+pub use topology::{ReportOptions, TopologyReport};

@@ -1,19 +1,24 @@
-//! `solidkit check`: read a mesh, report its topology, exit 1 unless it bounds a solid.
+//! `solidkit check`: read a mesh, report its topology, exit 1 unless it bounds a solid (closed
+//! oriented manifold, no self-intersection).
 
 use crate::args::CheckArgs;
 use crate::report;
 use anyhow::Result;
-use solidkit_meshing::TopologyReport;
 use solidkit_meshing::io::read_mesh;
+use solidkit_meshing::{ReportOptions, TopologyReport};
 
-/// Prints the report; exit code 0 for a closed oriented 2-manifold, 1 otherwise.
+/// Prints the report; exit code 0 for a closed oriented 2-manifold without self-intersections,
+/// 1 otherwise.
 pub fn run(a: &CheckArgs) -> Result<u8> {
     let mesh = read_mesh(&a.mesh)?;
-    let r = TopologyReport::of(&mesh);
+    let options = ReportOptions {
+        self_intersections: !a.no_self_intersections,
+    };
+    let r = TopologyReport::with_options(&mesh, &options);
     if a.json {
         println!("{}", report::to_json(&r, &[])?);
     } else {
         print!("{}", r.to_text());
     }
-    Ok(if r.is_closed_manifold() { 0 } else { 1 })
+    Ok(if r.is_valid_solid() { 0 } else { 1 })
 }

@@ -6,10 +6,10 @@ use anyhow::{Result, anyhow};
 use glam::DVec3;
 use serde_json::json;
 use solidkit_kernel::{Aabb, Solid};
-use solidkit_meshing::TopologyReport;
 use solidkit_meshing::io::write_mesh;
 use solidkit_meshing::marching_cubes::GridSpec;
 use solidkit_meshing::octree::{SparseOptions, mesh_sparse};
+use solidkit_meshing::{ReportOptions, TopologyReport};
 use std::time::Instant;
 
 /// Meshes the input and prints the report; exit code 0.
@@ -44,13 +44,19 @@ pub fn run(a: &MeshArgs) -> Result<u8> {
         Method::Mc => mesh_sparse(&program, spec, &SparseOptions::default())?,
     };
     let time_s = start.elapsed().as_secs_f64();
-    let r = TopologyReport::of(&mesh);
+    let options = ReportOptions {
+        self_intersections: !a.no_self_intersections,
+    };
+    let report_start = Instant::now();
+    let r = TopologyReport::with_options(&mesh, &options);
+    let report_s = report_start.elapsed().as_secs_f64();
     if let Some(out) = &a.output {
         write_mesh(out, &mesh)?;
     }
     if a.json {
         let extra = [
             ("time_s", json!(time_s)),
+            ("report_time_s", json!(report_s)),
             ("resolution", json!(a.resolution)),
             ("cells", json!(spec.cells)),
             ("method", json!("mc")),
@@ -66,6 +72,7 @@ pub fn run(a: &MeshArgs) -> Result<u8> {
             a.resolution, spec.cell
         );
         println!("time: {time_s:.3} s");
+        println!("report time: {report_s:.3} s");
         if let Some(out) = &a.output {
             println!("wrote: {}", out.display());
         }

@@ -159,6 +159,63 @@ impl TriangleTree {
         best
     }
 
+    /// The corners of the triangle in `slot` (slots are the tree's order, `0..triangle_count()`).
+    pub(crate) fn slot_corners(&self, slot: usize) -> [DVec3; 3] {
+        self.corners[slot]
+    }
+
+    /// The index in the input mesh of the triangle in `slot`.
+    pub(crate) fn slot_triangle(&self, slot: usize) -> u32 {
+        self.ids[slot]
+    }
+
+    /// The slot ranges of the leaves (together, every slot once).
+    pub(crate) fn leaves(&self) -> Vec<std::ops::Range<usize>> {
+        let mut leaves = Vec::new();
+        let mut stack = vec![0u32];
+        while let Some(i) = stack.pop() {
+            let node = &self.bvh.nodes[i as usize];
+            if node.is_leaf() {
+                let first = node.first_index as usize;
+                leaves.push(first..first + node.prim_count as usize);
+            } else {
+                stack.extend([node.first_index, node.first_index + 1]);
+            }
+        }
+        leaves.sort_unstable_by_key(|r| r.start);
+        leaves
+    }
+
+    /// Calls `f(slot)` for every triangle whose box meets the closed box `[lo, hi]`; `stack` is
+    /// reusable scratch.
+    pub(crate) fn for_each_overlap(
+        &self,
+        [lo, hi]: [DVec3; 2],
+        stack: &mut Vec<u32>,
+        mut f: impl FnMut(usize),
+    ) {
+        let meets = |[l, h]: [DVec3; 2]| l.cmple(hi).all() && lo.cmple(h).all();
+        stack.clear();
+        stack.push(0);
+        while let Some(i) = stack.pop() {
+            if !meets(self.boxes[i as usize]) {
+                continue;
+            }
+            let node = &self.bvh.nodes[i as usize];
+            if node.is_leaf() {
+                let first = node.first_index as usize;
+                for slot in first..first + node.prim_count as usize {
+                    let [a, b, c] = self.corners[slot];
+                    if meets([a.min(b).min(c), a.max(b).max(c)]) {
+                        f(slot);
+                    }
+                }
+            } else {
+                stack.extend([node.first_index, node.first_index + 1]);
+            }
+        }
+    }
+
     /// Exact node boxes: nodes listed parents first by an explicit-stack walk, then filled in
     /// reverse (children before parents).
     fn exact_boxes(&self) -> Vec<[DVec3; 2]> {

@@ -10,12 +10,16 @@
 //!   way by both neighbours (3 inconsistent edges);
 //! - `non_manifold_edge`: two cubes sharing only an edge (4 triangles on it);
 //! - `non_manifold_vertex`: two cubes sharing only a corner (two fans there);
-//! - `duplicate_face`: a cube with one triangle repeated: its 3 edges have 3 triangles each;
+//! - `duplicate_face`: a cube with one triangle repeated: its 3 edges have 3 triangles each, and
+//!   the copy overlaps the original (1 self-intersecting pair);
 //! - `self_intersection`: a cube and a tetrahedron as two closed shells, the tetrahedron's apex
 //!   poking through one top triangle of the cube: 3 pairs of crossing triangles;
 //! - `degenerate_faces`: a cube with one triangle split at the midpoint of an edge, closed by the
 //!   zero-area triangle on that edge (still a closed manifold), plus a triangle with a repeated
-//!   vertex index (left out of the topology).
+//!   vertex index (left out of the topology). The two halves each share one vertex with the
+//!   triangle across the split edge but touch it along half of that edge: 2 self-intersecting
+//!   pairs, since triangles that meet beyond the vertices they share count (the zero-area triangle
+//!   itself is skipped, as `solidkit check` does).
 
 use super::GenSolid;
 use super::truth::{Truth, TruthMethod};
@@ -58,8 +62,7 @@ pub struct Defect {
     pub detail: String,
 }
 
-/// What a checker must report for the mesh (the keys of `solidkit check --json`, plus
-/// `self_intersections`: pairs of crossing triangles that share no vertex).
+/// What a checker must report for the mesh (keys of `solidkit check --json`).
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct ExpectedCheck {
     /// Referenced vertices.
@@ -82,7 +85,8 @@ pub struct ExpectedCheck {
     pub inconsistent_edges: usize,
     /// Zero-area or repeated-index triangles.
     pub degenerate_faces: usize,
-    /// Pairs of crossing triangles (sharing no vertex).
+    /// Pairs of triangles that meet beyond the vertices they share (touching counts; duplicates
+    /// count; zero-area triangles are skipped).
     pub self_intersections: usize,
     /// No boundary edges.
     pub closed: bool,
@@ -327,6 +331,7 @@ fn duplicate_face() -> GenSolid {
     b.mesh.triangles.push(first);
     let mut e = clean(1, (8, 18, 13));
     e.non_manifold_edges = 3;
+    e.self_intersections = 1;
     e.manifold = false;
     broken(
         "duplicate_face",
@@ -335,7 +340,7 @@ fn duplicate_face() -> GenSolid {
         vec![defect(
             DefectKind::DuplicateFace,
             1,
-            "triangle 12 repeats triangle 0: its 3 edges have 3 triangles each",
+            "triangle 12 repeats triangle 0: its 3 edges have 3 triangles each and it overlaps triangle 0",
         )],
         e,
         None,
@@ -391,6 +396,7 @@ fn degenerate_faces() -> GenSolid {
     b.mesh.triangles.push([v0, v0, v1]);
     let mut e = clean(1, (9, 21, 14));
     e.degenerate_faces = 2;
+    e.self_intersections = 2;
     broken(
         "degenerate_faces",
         "unit cube whose top triangle (0,0,1)-(1,0,1)-(1,1,1) is split at the midpoint of its diagonal and closed by the zero-area triangle on the diagonal, plus one triangle with a repeated vertex index",

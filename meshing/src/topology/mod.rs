@@ -17,6 +17,13 @@
 //! collapsed (repeated-index) triangle still reports as a closed manifold. A vertex used only by
 //! such triangles counts as unreferenced. Geometrically degenerate triangles (distinct indices,
 //! zero area) are counted as degenerate but otherwise treated like any other triangle.
+//!
+//! # Self-intersections
+//!
+//! [`TopologyReport::of`] also counts the pairs of triangles that meet beyond the vertices they
+//! share ([`crate::intersect`]: BVH broad phase, exact predicates), which no valid solid boundary
+//! has; [`TopologyReport::with_options`] can skip it (it costs about as much as the rest of the
+//! report together).
 
 mod edges;
 mod measures;
@@ -39,6 +46,7 @@ pub(crate) use measures::is_usable;
 pub(crate) use vertices::fan_counts;
 
 use crate::IndexedMesh;
+use crate::intersect::self_intersections;
 use measures::Measures;
 use shells::{ShellTally, Shells};
 
@@ -93,6 +101,10 @@ pub struct TopologyReport {
     pub area: f64,
     /// Bounding box `[min, max]` of the referenced vertices; all zeros for an empty mesh.
     pub bbox: [[f64; 3]; 2],
+    /// Pairs of triangles that meet beyond their shared vertices (see
+    /// [`crate::intersect`]); `None` when skipped ([`ReportOptions`]) or when a used vertex is
+    /// not finite.
+    pub self_intersections: Option<usize>,
     /// The first few offending items of each kind.
     pub examples: Offenders,
 }
@@ -112,6 +124,23 @@ pub struct Offenders {
     pub inconsistent_edges: Vec<[u32; 2]>,
     /// Degenerate triangles.
     pub degenerate_faces: Vec<u32>,
+    /// Intersecting triangle pairs `[i, j]`, `i < j`.
+    pub self_intersections: Vec<[u32; 2]>,
+}
+
+/// What [`TopologyReport::with_options`] computes beyond the always-present items.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct ReportOptions {
+    /// Count self-intersecting triangle pairs (default `true`).
+    pub self_intersections: bool,
+}
+
+impl Default for ReportOptions {
+    fn default() -> Self {
+        Self {
+            self_intersections: true,
+        }
+    }
 }
 
 /// Counts of the defective edge kinds.
@@ -123,8 +152,31 @@ struct EdgeDefects {
 }
 
 impl TopologyReport {
-    /// The report of `mesh`. Never panics, whatever the indices (see the module docs).
+    /// The report of `mesh`, self-intersections included. Never panics, whatever the indices (see
+    /// the module docs).
     pub fn of(mesh: &IndexedMesh) -> Self {
+        Self::with_options(mesh, &ReportOptions::default())
+    }
+
+    /// The report of `mesh` with the optional parts chosen by `options`.
+    pub fn with_options(mesh: &IndexedMesh, options: &ReportOptions) -> Self {
+        let intersections = || {
+            options
+                .self_intersections
+                .then(|| self_intersections(mesh, MAX_EXAMPLES).ok())
+                .flatten()
+        };
+        let (mut report, intersections) =
+            rayon::join(|| Self::without_options(mesh), intersections);
+        if let Some(found) = intersections {
+            report.self_intersections = Some(found.count);
+            report.examples.self_intersections = found.examples;
+        }
+        report
+    }
+
+    /// The report without self-intersections.
+    fn without_options(mesh: &IndexedMesh) -> Self {
         let vertex_count = mesh.positions.len();
         let triangles = usable_triangles(mesh);
         let tris: &[[u32; 3]] = &triangles;
@@ -164,6 +216,7 @@ impl TopologyReport {
             volume: measures.volume,
             area: measures.area,
             bbox: measures.bbox,
+            self_intersections: None,
             examples,
         }
     }
@@ -171,6 +224,12 @@ impl TopologyReport {
     /// True for a valid solid boundary: closed, manifold and oriented.
     pub fn is_closed_manifold(&self) -> bool {
         self.closed && self.manifold && self.oriented
+    }
+
+    /// True for a closed oriented manifold with no self-intersection found (skipped counts as
+    /// none found): what `solidkit check` accepts.
+    pub fn is_valid_solid(&self) -> bool {
+        self.is_closed_manifold() && self.self_intersections.unwrap_or(0) == 0
     }
 }
 

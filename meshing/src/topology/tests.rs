@@ -1,7 +1,7 @@
 //! Tests of the topology report on closed solids, tori, several shells and every defect kind.
 
 use super::test_meshes::*;
-use super::{Offenders, TopologyReport};
+use super::{Offenders, ReportOptions, TopologyReport};
 use crate::IndexedMesh;
 
 /// Asserts the report of a single closed genus-0 solid.
@@ -170,6 +170,9 @@ fn duplicate_triangle_gives_three_non_manifold_edges() {
     );
     assert!(r.closed && !r.manifold && r.oriented);
     assert_eq!(r.degenerate_faces, 0);
+    // The duplicated triangle overlaps its original entirely.
+    assert_eq!(r.self_intersections, Some(1));
+    assert_eq!(r.examples.self_intersections, vec![[0, 12]]);
 }
 
 #[test]
@@ -261,6 +264,50 @@ fn large_torus_reports() {
     assert_eq!(r.euler_characteristic, 0);
     assert_eq!(r.genus, Some(1));
     assert!(r.is_closed_manifold());
+    assert_eq!(r.self_intersections, Some(0));
+}
+
+#[test]
+fn self_intersections_are_counted_unless_skipped() {
+    let mesh = read_off(&fixture("self_intersecting.off"));
+    let r = TopologyReport::of(&mesh);
+    // Two sound cubes as far as topology goes, but crossing each other.
+    assert!(r.is_closed_manifold() && r.shells == 2);
+    let count = r.self_intersections.unwrap();
+    assert!(count > 0 && !r.is_valid_solid());
+    let shown = &r.examples.self_intersections;
+    assert_eq!(shown.len(), count.min(super::MAX_EXAMPLES));
+    assert!(shown.iter().all(|&[i, j]| i < 12 && j >= 12), "{shown:?}");
+    assert!(shown.windows(2).all(|w| w[0] < w[1]));
+    let text = r.to_text();
+    assert!(
+        text.contains(&format!("self-intersections:     {count}")),
+        "{text}"
+    );
+    assert!(text.contains(&format!(
+        "intersecting faces:     {}-{}",
+        shown[0][0], shown[0][1]
+    )));
+
+    let skipped = TopologyReport::with_options(
+        &mesh,
+        &ReportOptions {
+            self_intersections: false,
+        },
+    );
+    assert_eq!(skipped.self_intersections, None);
+    assert!(skipped.examples.self_intersections.is_empty() && skipped.is_valid_solid());
+    assert!(
+        skipped
+            .to_text()
+            .contains("self-intersections:     - (not checked)")
+    );
+    // Everything else is the same.
+    let mut counted = r.clone();
+    counted.self_intersections = None;
+    counted.examples.self_intersections.clear();
+    assert_eq!(skipped, counted);
+    assert!(TopologyReport::of(&cube()).is_valid_solid());
 }
 
 #[test]

@@ -52,6 +52,11 @@ impl TopologyReport {
             ("inconsistent edges", self.inconsistent_edges.to_string()),
             ("degenerate faces", self.degenerate_faces.to_string()),
             (
+                "self-intersections",
+                self.self_intersections
+                    .map_or_else(|| "- (not checked)".to_string(), |n| n.to_string()),
+            ),
+            (
                 "unreferenced vertices",
                 self.unreferenced_vertices.to_string(),
             ),
@@ -63,7 +68,7 @@ impl TopologyReport {
     }
 
     /// The offender lines: key, total count and rendered examples.
-    fn offender_lines(&self) -> [(&'static str, usize, Vec<String>); 5] {
+    fn offender_lines(&self) -> [(&'static str, usize, Vec<String>); 6] {
         let ex = &self.examples;
         [
             (
@@ -90,6 +95,11 @@ impl TopologyReport {
                 "degenerate faces at",
                 self.degenerate_faces,
                 items(&ex.degenerate_faces),
+            ),
+            (
+                "intersecting faces",
+                self.self_intersections.unwrap_or(0),
+                edges(&ex.self_intersections),
             ),
         ]
     }
@@ -129,7 +139,7 @@ fn point(p: [f64; 3]) -> String {
     format!("{} {} {}", p[0], p[1], p[2])
 }
 
-/// Edges as `a-b`.
+/// Edges (or face pairs) as `a-b`.
 fn edges(list: &[[u32; 2]]) -> Vec<String> {
     list.iter().map(|[a, b]| format!("{a}-{b}")).collect()
 }

@@ -1,4 +1,6 @@
-//! The summary `gen` prints and the self-checks that decide its exit code.
+//! The summary `gen` prints and the self-checks that decide its exit code: stated topology and
+//! volume tolerance met, no self-intersections outside the `broken` suite, broken meshes
+//! reporting exactly the defects put in.
 
 use solidkit_meshing::suites::Manifest;
 use std::fmt::Write;
@@ -52,6 +54,13 @@ pub fn failures(m: &Manifest) -> Vec<String> {
                 r.name, r.error.volume, r.error.volume_tolerance
             ));
         }
+        if r.defects.is_none() && r.mesh.self_intersections.unwrap_or(0) > 0 {
+            out.push(format!(
+                "{}: {} self-intersecting triangle pairs",
+                r.name,
+                r.mesh.self_intersections.unwrap_or(0)
+            ));
+        }
         if let Some(d) = &r.defects {
             let e = &d.expected;
             let got = (
@@ -63,6 +72,7 @@ pub fn failures(m: &Manifest) -> Vec<String> {
                 r.mesh.vertices,
                 r.mesh.edges,
                 r.mesh.faces,
+                r.mesh.self_intersections.unwrap_or(e.self_intersections),
             );
             let want = (
                 e.boundary_edges,
@@ -73,10 +83,11 @@ pub fn failures(m: &Manifest) -> Vec<String> {
                 e.vertices,
                 e.edges,
                 e.faces,
+                e.self_intersections,
             );
             if got != want {
                 out.push(format!(
-                    "{}: report (boundary, non-manifold edges, non-manifold vertices, inconsistent, degenerate, V, E, F) = {got:?}, expected {want:?}",
+                    "{}: report (boundary, non-manifold edges, non-manifold vertices, inconsistent, degenerate, V, E, F, self-intersections) = {got:?}, expected {want:?}",
                     r.name
                 ));
             }

@@ -1,0 +1,157 @@
+//! Self-intersections of a triangle mesh: the pairs of triangles that meet beyond the vertices
+//! they share.
+//!
+//! Broad phase: every triangle queries the bounding volume hierarchy of the mesh
+//! ([`TriangleTree`], built on obvhs) for triangles of higher index whose boxes meet its own,
+//! in parallel (rayon) over chunks of the tree's leaf order. Narrow phase: exact triangle–triangle
+//! tests on orientation predicates, with neighbours (shared vertex or edge) counted only when
+//! they meet beyond what they share (a fold-back, a coplanar overlap); see `triangles.rs`.
+//! Plain floating-point separation tests with a safe margin (`filter.rs`) settle most pairs
+//! before any exact predicate: in flat regions neighbours are exactly coplanar, and an exact
+//! zero is the slowest case of adaptive predicates.
+//! Touching counts as meeting. Exactly collinear triangles are skipped (they are degenerate
+//! faces); triangles with unusable indices are not in the tree.
+//!
+//! The count and the examples (the smallest pairs) do not depend on the thread count.
+
+mod filter;
+mod predicates;
+mod triangles;
+
+#[cfg(test)]
+mod tests;
+
+use rayon::prelude::*;
+
+use crate::IndexedMesh;
+use crate::measure::{MeasureError, TriangleTree};
+use triangles::{Tri, meet_beyond_shared};
+
+/// Tree leaves per parallel work item.
+const CHUNK: usize = 1 << 10;
+
+/// The intersecting triangle pairs of a mesh.
+#[derive(Debug, Clone, Default, PartialEq, Eq)]
+pub struct SelfIntersections {
+    /// Number of intersecting pairs.
+    pub count: usize,
+    /// The smallest pairs `[i, j]` (`i < j`, triangle indices into the mesh), ascending, at most
+    /// the limit given.
+    pub examples: Vec<[u32; 2]>,
+}
+
+impl SelfIntersections {
+    /// Appends `other`'s pairs, keeping the `limit` smallest examples.
+    fn absorb(mut self, other: Self, limit: usize) -> Self {
+        self.count += other.count;
+        self.examples.extend(other.examples);
+        self.examples.sort_unstable();
+        self.examples.truncate(limit);
+        self
+    }
+}
+
+/// The self-intersections of `mesh`, with at most `limit` example pairs. Fails only when a vertex
+/// used by a triangle is not finite; a mesh without usable triangles has none.
+pub fn self_intersections(
+    mesh: &IndexedMesh,
+    limit: usize,
+) -> Result<SelfIntersections, MeasureError> {
+    let tree = match TriangleTree::new(mesh) {
+        Ok(tree) => tree,
+        Err(MeasureError::NoSurface) => return Ok(SelfIntersections::default()),
+        Err(e) => return Err(e),
+    };
+    let n = tree.triangle_count();
+    let tris: Vec<Option<Tri>> = (0..n)
+        .into_par_iter()
+        .map(|s| Tri::new(tree.slot_corners(s)))
+        .collect();
+    let leaves = tree.leaves();
+    let total = leaves
+        .par_chunks(CHUNK)
+        .map_init(Scratch::default, |scratch, chunk| {
+            let mut found = SelfIntersections::default();
+            for leaf in chunk {
+                leaf_pairs(&tree, mesh, &tris, leaf.clone(), scratch, &mut found, limit);
+            }
+            found
+        })
+        .collect::<Vec<_>>()
+        .into_iter()
+        .fold(SelfIntersections::default(), |a, b| a.absorb(b, limit));
+    Ok(total)
+}
+
+/// Reusable buffers of one worker.
+#[derive(Debug, Default)]
+struct Scratch {
+    stack: Vec<u32>,
+    candidates: Vec<usize>,
+    hits: Vec<[u32; 2]>,
+}
+
+/// Adds the intersecting pairs of the triangles in one leaf with higher-index triangles: one tree
+/// query for the leaf's box, then the candidates per triangle.
+fn leaf_pairs(
+    tree: &TriangleTree,
+    mesh: &IndexedMesh,
+    tris: &[Option<Tri>],
+    leaf: std::ops::Range<usize>,
+    scratch: &mut Scratch,
+    found: &mut SelfIntersections,
+    limit: usize,
+) {
+    let Some(leaf_box) = leaf
+        .clone()
+        .filter(|&s| tris[s].is_some())
+        .map(|s| triangle_box(tree.slot_corners(s)))
+        .reduce(|[l0, h0], [l1, h1]| [l0.min(l1), h0.max(h1)])
+    else {
+        return;
+    };
+    let Scratch {
+        stack,
+        candidates,
+        hits,
+    } = scratch;
+    candidates.clear();
+    tree.for_each_overlap(leaf_box, stack, |other| {
+        if tris[other].is_some() {
+            candidates.push(other);
+        }
+    });
+    hits.clear();
+    for slot in leaf {
+        let Some(tri) = &tris[slot] else { continue };
+        let i = tree.slot_triangle(slot);
+        let ti = mesh.triangles[i as usize];
+        let [lo, hi] = triangle_box(tri.p);
+        for &other in candidates.iter() {
+            let j = tree.slot_triangle(other);
+            if j <= i {
+                continue;
+            }
+            let [l, h] = triangle_box(tree.slot_corners(other));
+            if !(l.cmple(hi).all() && lo.cmple(h).all()) {
+                continue;
+            }
+            if let Some(trj) = &tris[other]
+                && meet_beyond_shared(ti, tri, mesh.triangles[j as usize], trj)
+            {
+                hits.push([i, j]);
+            }
+        }
+    }
+    if !hits.is_empty() {
+        found.count += hits.len();
+        found.examples.extend_from_slice(hits);
+        found.examples.sort_unstable();
+        found.examples.truncate(limit);
+    }
+}
+
+/// The box `[min, max]` of a triangle.
+fn triangle_box([a, b, c]: [glam::DVec3; 3]) -> [glam::DVec3; 2] {
+    [a.min(b).min(c), a.max(b).max(c)]
+}

@@ -1,0 +1,77 @@
+//! Exact orientation predicates (Shewchuk's adaptive arithmetic, from the `robust` crate): the
+//! sign of `orient3d` says on which side of a plane a point lies, `orient2d` on which side of a
+//! line, with no rounding error. 2D tests run on a coordinate projection of a plane (dropping
+//! one axis copies coordinates, so it is exact as well).
+
+use glam::DVec3;
+use robust::{Coord, Coord3D, orient2d, orient3d};
+
+/// The sign (-1, 0 or 1) of the volume of the tetrahedron `abcd` (0 when coplanar).
+pub(crate) fn orient(a: DVec3, b: DVec3, c: DVec3, d: DVec3) -> i8 {
+    let k = |p: DVec3| Coord3D {
+        x: p.x,
+        y: p.y,
+        z: p.z,
+    };
+    sign(orient3d(k(a), k(b), k(c), k(d)))
+}
+
+/// A projection onto a coordinate plane: the two kept axes.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(crate) struct Projection([usize; 2]);
+
+impl Projection {
+    /// A projection under which the triangle keeps a non-zero area, preferring the axis its
+    /// normal is most aligned with; `None` when the triangle is exactly collinear (degenerate).
+    pub(crate) fn of([a, b, c]: [DVec3; 3]) -> Option<Self> {
+        let n = (b - a).cross(c - a).abs();
+        let mut axes = [0, 1, 2];
+        axes.sort_by(|&i, &j| n[j].total_cmp(&n[i]));
+        axes.into_iter()
+            .map(|drop| {
+                Self(match drop {
+                    0 => [1, 2],
+                    1 => [2, 0],
+                    _ => [0, 1],
+                })
+            })
+            .find(|p| p.orient(a, b, c) != 0)
+    }
+
+    /// The sign of the projected triangle `abc` (1: counter-clockwise).
+    pub(crate) fn orient(self, a: DVec3, b: DVec3, c: DVec3) -> i8 {
+        sign(orient2d(self.coord(a), self.coord(b), self.coord(c)))
+    }
+
+    /// The projected coordinates of `p`.
+    fn coord(self, p: DVec3) -> Coord<f64> {
+        Coord {
+            x: p[self.0[0]],
+            y: p[self.0[1]],
+        }
+    }
+
+    /// True when `p`, known to be on the line through `a` and `b`, lies on the closed segment
+    /// `[a, b]` (compared coordinate by coordinate, exact).
+    pub(crate) fn within(self, p: DVec3, a: DVec3, b: DVec3) -> bool {
+        self.0
+            .iter()
+            .all(|&k| p[k] >= a[k].min(b[k]) && p[k] <= a[k].max(b[k]))
+    }
+}
+
+/// The sign of `x` as -1, 0 or 1.
+fn sign(x: f64) -> i8 {
+    if x > 0.0 {
+        1
+    } else if x < 0.0 {
+        -1
+    } else {
+        0
+    }
+}
+
+/// True when the signs include both -1 and 1.
+pub(crate) fn mixed(signs: &[i8]) -> bool {
+    signs.contains(&1) && signs.contains(&-1)
+}

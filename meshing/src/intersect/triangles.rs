@@ -1,0 +1,178 @@
+//! Exact intersection tests of closed triangles, and of pairs of mesh triangles that share
+//! vertices.
+//!
+//! Two triangles in different planes meet along the line where the planes cross; each cuts that
+//! line in a segment whose ends lie on its edges, so they intersect exactly when an edge of one
+//! meets the other. Coplanar triangles intersect when two edges cross or a vertex of one lies in
+//! the other. Each test is a handful of exact orientation signs ([`predicates`](super::predicates)),
+//! so touching counts as intersecting and nothing depends on rounding.
+//!
+//! Mesh neighbours touch by construction, so pairs sharing vertices ask whether they meet *beyond*
+//! what they share:
+//! - one shared vertex `v` (triangles `v a b`, `v c d`): the intersection, if more than `v`, is a
+//!   segment from `v` whose far end lies on `ab` or `cd`, so they do exactly when `ab` meets the
+//!   second triangle or `cd` the first (this also catches coplanar overlapping wedges);
+//! - a shared edge `uw` (third vertices `a`, `b`): in different planes they meet only along `uw`;
+//!   coplanar, they overlap when `a` and `b` lie on the same side of `uw` (a fold-back);
+//! - three shared vertices: the same triangle twice, which overlaps itself.
+//!
+//! Exactly collinear triangles have no plane and are left out by the caller (they are reported as
+//! degenerate faces).
+
+use glam::DVec3;
+
+use super::filter;
+use super::predicates::{Projection, mixed, orient};
+
+/// A non-degenerate triangle: its corners and a projection that keeps its area.
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct Tri {
+    pub(crate) p: [DVec3; 3],
+    pub(crate) proj: Projection,
+}
+
+impl Tri {
+    /// The triangle, or `None` when it is exactly collinear.
+    pub(crate) fn new(p: [DVec3; 3]) -> Option<Self> {
+        Projection::of(p).map(|proj| Self { p, proj })
+    }
+
+    /// True when the closed segment `[p, q]` meets the closed triangle.
+    pub(crate) fn meets_segment(&self, p: DVec3, q: DVec3) -> bool {
+        let [a, b, c] = self.p;
+        let (sp, sq) = (orient(a, b, c, p), orient(a, b, c, q));
+        if sp == sq && sp != 0 {
+            return false;
+        }
+        if sp == 0 && sq == 0 {
+            return self.meets_coplanar_segment(p, q);
+        }
+        // The segment crosses the plane at one point; it is in the triangle when the line `pq`
+        // passes no edge on the wrong side.
+        !mixed(&[orient(p, q, a, b), orient(p, q, b, c), orient(p, q, c, a)])
+    }
+
+    /// [`meets_segment`](Self::meets_segment) for a segment in the triangle's plane.
+    fn meets_coplanar_segment(&self, p: DVec3, q: DVec3) -> bool {
+        let [a, b, c] = self.p;
+        self.contains_coplanar(p)
+            || self.contains_coplanar(q)
+            || [(a, b), (b, c), (c, a)]
+                .iter()
+                .any(|&(u, w)| segments_meet(self.proj, p, q, u, w))
+    }
+
+    /// True when `p`, in the triangle's plane, lies in the closed triangle.
+    fn contains_coplanar(&self, p: DVec3) -> bool {
+        let [a, b, c] = self.p;
+        let o = self.proj;
+        !mixed(&[o.orient(a, b, p), o.orient(b, c, p), o.orient(c, a, p)])
+    }
+
+    /// True when two triangles with no shared vertex meet (closed sets).
+    pub(crate) fn meets(&self, other: &Tri) -> bool {
+        let [a, b, c] = self.p;
+        let [d, e, f] = other.p;
+        let s = [orient(a, b, c, d), orient(a, b, c, e), orient(a, b, c, f)];
+        if s[0] != 0 && s[0] == s[1] && s[1] == s[2] {
+            return false;
+        }
+        if s == [0, 0, 0] {
+            // Coplanar: crossing edges, or one inside the other.
+            return self.contains_coplanar(d)
+                || other.contains_coplanar(a)
+                || edges(self.p).iter().any(|&(u, w)| {
+                    edges(other.p)
+                        .iter()
+                        .any(|&(x, y)| segments_meet(self.proj, u, w, x, y))
+                });
+        }
+        let t = [orient(d, e, f, a), orient(d, e, f, b), orient(d, e, f, c)];
+        if t[0] != 0 && t[0] == t[1] && t[1] == t[2] {
+            return false;
+        }
+        edges(self.p)
+            .iter()
+            .any(|&(u, w)| other.meets_segment(u, w))
+            || edges(other.p)
+                .iter()
+                .any(|&(u, w)| self.meets_segment(u, w))
+    }
+}
+
+/// The three edges of a triangle.
+fn edges([a, b, c]: [DVec3; 3]) -> [(DVec3, DVec3); 3] {
+    [(a, b), (b, c), (c, a)]
+}
+
+/// True when the closed segments `[p, q]` and `[r, s]`, all four points in one plane that `proj`
+/// keeps non-degenerate, meet.
+fn segments_meet(proj: Projection, p: DVec3, q: DVec3, r: DVec3, s: DVec3) -> bool {
+    let (d1, d2) = (proj.orient(r, s, p), proj.orient(r, s, q));
+    let (d3, d4) = (proj.orient(p, q, r), proj.orient(p, q, s));
+    if d1 * d2 < 0 && d3 * d4 < 0 {
+        return true;
+    }
+    (d1 == 0 && proj.within(p, r, s))
+        || (d2 == 0 && proj.within(q, r, s))
+        || (d3 == 0 && proj.within(r, p, q))
+        || (d4 == 0 && proj.within(s, p, q))
+}
+
+/// True when mesh triangles `i` and `j` (vertex indices `ti`, `tj`, each with distinct indices)
+/// meet beyond the vertices they share; see the [module docs](self). Floating-point separation
+/// tests ([`filter`](super::filter)) settle most pairs first.
+pub(crate) fn meet_beyond_shared(ti: [u32; 3], i: &Tri, tj: [u32; 3], j: &Tri) -> bool {
+    decide(ti, i, tj, j, true)
+}
+
+/// [`meet_beyond_shared`] by exact predicates alone (the reference the filters are tested
+/// against).
+#[cfg(test)]
+pub(crate) fn meet_beyond_shared_exact(ti: [u32; 3], i: &Tri, tj: [u32; 3], j: &Tri) -> bool {
+    decide(ti, i, tj, j, false)
+}
+
+/// The decision, with or without the floating-point filters.
+fn decide(ti: [u32; 3], i: &Tri, tj: [u32; 3], j: &Tri, filter: bool) -> bool {
+    // Position in `tj` of each corner of `ti`, if shared.
+    let shared = ti.map(|v| tj.iter().position(|&w| w == v));
+    match shared.iter().flatten().count() {
+        0 => !(filter && filter::separated(i.p, j.p)) && i.meets(j),
+        1 => {
+            // The shared vertex and the corners other than it, in each triangle.
+            let ki = shared.iter().position(Option::is_some).unwrap_or(0);
+            let kj = shared[ki].unwrap_or(0);
+            let (a, b) = (i.p[(ki + 1) % 3], i.p[(ki + 2) % 3]);
+            let (c, d) = (j.p[(kj + 1) % 3], j.p[(kj + 2) % 3]);
+            if filter && filter::separated_at_vertex(i.p[ki], [a, b], [c, d]) {
+                return false;
+            }
+            meet_at_vertex(i, [a, b], j, [c, d])
+        }
+        2 => {
+            let ki = shared.iter().position(Option::is_none).unwrap_or(0);
+            let kj = (0..3).find(|&k| !ti.contains(&tj[k])).unwrap_or(0);
+            let (u, w) = (i.p[(ki + 1) % 3], i.p[(ki + 2) % 3]);
+            let (a, b) = (i.p[ki], j.p[kj]);
+            if filter && filter::apart_across_edge(u, w, a, b) {
+                return false;
+            }
+            orient(u, w, a, b) == 0 && i.proj.orient(u, w, a) == i.proj.orient(u, w, b)
+        }
+        _ => true,
+    }
+}
+
+/// Triangles `i = v a b` and `j = v c d` meet beyond `v` when `ab` meets `j` or `cd` meets `i`.
+/// When `a` and `b` both lie in `j`'s plane the triangles are coplanar and both tests are 2D
+/// (no further orientation test, each of which would be an exact zero: the slow path).
+fn meet_at_vertex(i: &Tri, [a, b]: [DVec3; 2], j: &Tri, [c, d]: [DVec3; 2]) -> bool {
+    let [p, q, r] = j.p;
+    let (sa, sb) = (orient(p, q, r, a), orient(p, q, r, b));
+    if sa == 0 && sb == 0 {
+        return j.meets_coplanar_segment(a, b) || i.meets_coplanar_segment(c, d);
+    }
+    let ab_meets_j = sa != sb || sa == 0;
+    (ab_meets_j && j.meets_segment(a, b)) || i.meets_segment(c, d)
+}
