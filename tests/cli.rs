@@ -304,3 +304,47 @@ fn one_and_two_threads_write_identical_bytes() {
         "1 and 2 threads wrote different files"
     );
 }
+
+/// `--method dc` meshes a closed manifold of the right genus; `--tolerance` (dual contouring only)
+/// gives fewer triangles with the same topology; a tolerance with marching cubes, or a
+/// non-positive one, is a one-line error with exit code 2.
+#[test]
+fn mesh_with_dual_contouring_and_tolerance() {
+    let tree = fixture("trees/torus.json");
+    let run = |extra: &[&str]| {
+        let mut args = vec!["mesh", path_str(&tree), "--resolution", "48", "--json"];
+        args.extend_from_slice(extra);
+        solidkit(&args)
+    };
+    let plain = run(&["--method", "dc"]);
+    assert_eq!(
+        plain.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&plain.stderr)
+    );
+    let plain = stdout_json(&plain);
+    assert_eq!(
+        (plain["genus"].as_i64(), plain["closed"].as_bool()),
+        (Some(1), Some(true))
+    );
+    assert_eq!(plain["method"], "dc");
+    let coarse = run(&["--method", "dc", "--tolerance", "0.01"]);
+    assert_eq!(coarse.status.code(), Some(0));
+    let coarse = stdout_json(&coarse);
+    assert_eq!(coarse["genus"].as_i64(), Some(1));
+    assert_eq!(coarse["manifold"].as_bool(), Some(true));
+    assert!(coarse["faces"].as_u64() < plain["faces"].as_u64());
+    for bad in [
+        &["--tolerance", "0.01"][..],
+        &["--method", "dc", "--tolerance", "-1"],
+    ] {
+        let o = run(bad);
+        assert_eq!(o.status.code(), Some(2), "{bad:?}");
+        let err = String::from_utf8_lossy(&o.stderr);
+        assert!(
+            err.starts_with("error:") && err.contains("tolerance"),
+            "{err}"
+        );
+    }
+}

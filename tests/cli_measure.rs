@@ -70,6 +70,7 @@ fn compare_reports_the_hausdorff_distance_of_a_scaled_cube() {
     let (a, b, h) = (&v["a"], &v["b"], &v["hausdorff"]);
     assert_eq!(a["closed"], true);
     assert_eq!(b["genus"], 0);
+    assert!(a["self_intersections"].is_null());
     assert!((a["volume"].as_f64().unwrap() - 1.0).abs() < 1e-12);
     assert!((b["volume"].as_f64().unwrap() - 3.375).abs() < 1e-12);
     let get = |k: &str| h[k].as_f64().unwrap_or_else(|| panic!("{k}: {h}"));

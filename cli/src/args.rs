@@ -35,6 +35,56 @@ pub enum Command {
     /// One benchmark case, run by `bench` in a child process so its peak memory is its own.
     #[command(hide = true)]
     BenchCase(BenchCaseArgs),
+    /// Subdivide a polygon mesh (Catmull-Clark, Loop, butterfly, Doo-Sabin), write it and print
+    /// the topology report of the result.
+    Subdivide(SubdivideArgs),
+}
+
+/// Arguments of `solidkit subdivide`.
+#[derive(Debug, clap::Args)]
+pub struct SubdivideArgs {
+    /// The mesh file (.obj .off .ply keep polygonal faces; .stl gives triangles).
+    pub mesh: PathBuf,
+    /// Write the subdivided mesh here (replaced atomically); .obj .off .ply keep its polygons,
+    /// .stl gets them triangulated.
+    #[arg(short, long)]
+    pub output: PathBuf,
+    /// The subdivision scheme.
+    #[arg(long, value_enum)]
+    pub scheme: SchemeArg,
+    /// How many times to apply it.
+    #[arg(long, default_value_t = 1)]
+    pub levels: u32,
+    /// Refuse (before any work) a request whose last level would have more faces than this.
+    #[arg(long, default_value_t = solidkit_meshing::subdivision::Limits::DEFAULT_MAX_FACES)]
+    pub max_faces: u64,
+    /// Print the report as JSON.
+    #[arg(long)]
+    pub json: bool,
+}
+
+/// `--scheme`: the subdivision schemes, by their JSON names.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum SchemeArg {
+    /// Catmull-Clark: any polygons to quads (approximating).
+    CatmullClark,
+    /// Loop: triangles (approximating).
+    Loop,
+    /// Modified butterfly: triangles (interpolating: the vertices stay).
+    Butterfly,
+    /// Doo-Sabin: any polygons (dual, approximating).
+    DooSabin,
+}
+
+impl From<SchemeArg> for solidkit_meshing::subdivision::Scheme {
+    fn from(s: SchemeArg) -> Self {
+        match s {
+            SchemeArg::CatmullClark => Self::CatmullClark,
+            SchemeArg::Loop => Self::Loop,
+            SchemeArg::Butterfly => Self::Butterfly,
+            SchemeArg::DooSabin => Self::DooSabin,
+        }
+    }
 }
 
 /// Polygonization method.
@@ -42,6 +92,8 @@ pub enum Command {
 pub enum Method {
     /// Marching cubes.
     Mc,
+    /// Manifold dual contouring (sharp features kept; `--tolerance` simplifies).
+    Dc,
 }
 
 /// Arguments of `solidkit mesh`.
@@ -58,6 +110,10 @@ pub struct MeshArgs {
     /// Polygonization method.
     #[arg(long, value_enum, default_value_t = Method::Mc)]
     pub method: Method,
+    /// Dual contouring only: collapse octree cells whose merged vertex stays within this
+    /// distance (model units) of the surface planes it replaces, where the topology allows.
+    #[arg(long, value_parser = parse_tolerance, allow_hyphen_values = true)]
+    pub tolerance: Option<f64>,
     /// Clip the solid to the box x0,y0,z0,x1,y1,z1 and mesh that (default: the solid's bounding
     /// box, unclipped). Needed for unbounded solids such as half-spaces.
     #[arg(long, value_parser = parse_bounds, allow_hyphen_values = true)]
@@ -167,6 +223,13 @@ pub struct BenchCaseArgs {
     /// Runs.
     #[arg(long, default_value_t = 5, value_parser = clap::value_parser!(u32).range(1..))]
     pub repeat: u32,
+}
+
+fn parse_tolerance(s: &str) -> Result<f64, String> {
+    match s.trim().parse::<f64>() {
+        Ok(t) if t.is_finite() && t > 0.0 => Ok(t),
+        _ => Err(format!("'{s}' is not a positive number")),
+    }
 }
 
 fn parse_bounds(s: &str) -> Result<[f64; 6], String> {

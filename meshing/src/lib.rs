@@ -5,6 +5,7 @@
 //! [`topology::TopologyReport`] and navigated as a [`halfedge::HalfEdgeMesh`].
 #![warn(missing_docs)]
 
+pub mod dual_contouring;
 pub mod halfedge;
 pub mod intersect;
 pub mod io;
@@ -12,6 +13,7 @@ pub mod marching_cubes;
 pub mod measure;
 pub mod octree;
 pub mod sink;
+pub mod subdivision;
 pub mod suites;
 pub mod topology;
 

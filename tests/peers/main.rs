@@ -9,7 +9,9 @@
 //! Timed: solidkit's `mesh_sparse` on `GridSpec::covering([-1, 1]³, n)` with the program
 //! compiled beforehand; fidget's `Octree::build` (depth `log2 n`) and `walk_dual` with the shape
 //! (VM tape or JIT code) built beforehand. The two methods differ (marching cubes on the grid
-//! samples vs manifold dual contouring of the same octree depth); the grids are the same.
+//! samples vs manifold dual contouring of the same octree depth); the grids are the same. The
+//! `DC` rows time solidkit's dual contouring (`mesh_dc`) against the same fidget runs: the same
+//! method on both sides.
 
 mod fidget_side;
 mod solidkit_side;
@@ -108,7 +110,7 @@ fn main() -> std::process::ExitCode {
         let ours = solidkit_side::Case::new(name, n);
         let vm = fidget_side::Case::vm(name, n);
         let jit = fidget_side::Case::jit(name, n);
-        let mut runs: [Runs; 3] = std::array::from_fn(|_| Runs {
+        let mut runs: [Runs; 4] = std::array::from_fn(|_| Runs {
             times: Vec::new(),
             mesh: IndexedMesh::default(),
         });
@@ -122,8 +124,16 @@ fn main() -> std::process::ExitCode {
             let (m, t) = timed(|| jit.mesh(&fidget_pool));
             runs[2].times.push(t);
             runs[2].mesh = fidget_side::to_indexed(&m);
+            let (m, t) = timed(|| pool.install(|| ours.mesh_dc()));
+            runs[3].times.push(t);
+            runs[3].mesh = m;
         }
-        let [sk, v, j] = [runs[0].median(), runs[1].median(), runs[2].median()];
+        let [sk, v, j, dc] = [
+            runs[0].median(),
+            runs[1].median(),
+            runs[2].median(),
+            runs[3].median(),
+        ];
         println!(
             "{:<14} {:>5} {:>11.4} {:>11.4} {:>11.4} {:>8.2}x {:>8.2}x {:>10} {:>10} {:>10}",
             name,
@@ -137,7 +147,21 @@ fn main() -> std::process::ExitCode {
             runs[1].mesh.triangle_count(),
             runs[2].mesh.triangle_count()
         );
-        for (who, r) in ["solidkit", "fidget VM", "fidget JIT"].iter().zip(&runs) {
+        println!(
+            "{:<14} {:>5} {:>11.4} {:>11.4} {:>11.4} {:>8.2}x {:>8.2}x {:>10} {:>10} {:>10}",
+            format!("{name} DC"),
+            format!("{n}³"),
+            dc,
+            v,
+            j,
+            v / dc,
+            j / dc,
+            runs[3].mesh.triangle_count(),
+            runs[1].mesh.triangle_count(),
+            runs[2].mesh.triangle_count()
+        );
+        let names = ["solidkit", "fidget VM", "fidget JIT", "solidkit DC"];
+        for (who, r) in names.iter().zip(&runs) {
             let (lo, hi) = r
                 .times
                 .iter()

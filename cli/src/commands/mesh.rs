@@ -6,6 +6,7 @@ use anyhow::{Result, anyhow};
 use glam::DVec3;
 use serde_json::json;
 use solidkit_kernel::{Aabb, Solid};
+use solidkit_meshing::dual_contouring::{DcOptions, mesh_dc};
 use solidkit_meshing::io::write_mesh;
 use solidkit_meshing::marching_cubes::GridSpec;
 use solidkit_meshing::octree::{SparseOptions, mesh_sparse};
@@ -36,12 +37,22 @@ pub fn run(a: &MeshArgs) -> Result<u8> {
             a.input.display()
         ));
     }
+    if a.tolerance.is_some() && a.method != Method::Dc {
+        return Err(anyhow!("--tolerance needs --method dc"));
+    }
     let spec = GridSpec::for_bounds(&bounds, a.resolution)
         .map_err(|e| anyhow!("{}: {e}", a.input.display()))?;
     let start = Instant::now();
     let program = solid.compile();
     let (mesh, stats) = match a.method {
         Method::Mc => mesh_sparse(&program, spec, &SparseOptions::default())?,
+        Method::Dc => {
+            let opts = DcOptions {
+                tolerance: a.tolerance,
+                ..DcOptions::default()
+            };
+            mesh_dc(&program, spec, &opts)?
+        }
     };
     let time_s = start.elapsed().as_secs_f64();
     let options = ReportOptions {
@@ -59,7 +70,14 @@ pub fn run(a: &MeshArgs) -> Result<u8> {
             ("report_time_s", json!(report_s)),
             ("resolution", json!(a.resolution)),
             ("cells", json!(spec.cells)),
-            ("method", json!("mc")),
+            (
+                "method",
+                json!(match a.method {
+                    Method::Mc => "mc",
+                    Method::Dc => "dc",
+                }),
+            ),
+            ("tolerance", json!(a.tolerance)),
             ("samples_evaluated", json!(stats.samples_evaluated)),
             ("program_length", json!(program.len())),
         ];

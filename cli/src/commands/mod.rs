@@ -6,6 +6,7 @@ mod compare;
 mod convert;
 mod r#gen;
 mod mesh;
+mod subdivide;
 
 use crate::args::Command;
 use anyhow::Result;
@@ -21,5 +22,6 @@ pub fn run(command: Command) -> Result<u8> {
         Command::Compare(a) => compare::run(&a),
         Command::Bench(a) => bench::run(&a),
         Command::BenchCase(a) => bench::run_case(&a),
+        Command::Subdivide(a) => subdivide::run(&a),
     }
 }

@@ -17,7 +17,8 @@
 //! circumradius or edge), `polyhedron` (vertices: [[x, y, z], …], faces: [[i, j, k, …], …],
 //! counter-clockwise from outside), `mesh` (path of an STL/OBJ/PLY/OFF file, loaded through a
 //! [`MeshResolver`]: see [`from_str_with`]), `prism` (polygon: [[x, y], …], optional holes,
-//! direction).
+//! direction), `subdivide` (scheme: catmull-clark | loop | butterfly | doo-sabin, levels, and a
+//! polyhedral `child`; computed by the [`MeshResolver`]).
 //! Quadrics: `ellipsoid` (radii), `quadric` (coefficients {a, b, c, f, g, h, p, q, r, d}, bounds),
 //! `elliptic_cylinder` / `elliptic_cone` / `elliptic_paraboloid` / `hyperbolic_paraboloid`
 //! (radii [a, b], bounds), `hyperboloid_one_sheet` / `hyperboloid_two_sheets` (radii, bounds);

@@ -16,6 +16,7 @@ mod blob;
 mod heightfield;
 mod polyhedra;
 mod quadric;
+mod subdivide;
 mod sweep;
 
 /// A problem at a byte offset, with the message already carrying the JSON path.
@@ -169,7 +170,8 @@ impl<'a> Reader<'a> {
                     .map(|(i, &c)| (format!("children[{i}]"), c))
                     .collect()
             }
-            "translate" | "rotate" | "scale" | "mirror" | "affine" | "offset" | "shell" => {
+            "translate" | "rotate" | "scale" | "mirror" | "affine" | "offset" | "shell"
+            | "subdivide" => {
                 vec![(
                     "child".to_string(),
                     self.required(index, entries, "child", &p)?,
@@ -228,6 +230,9 @@ impl<'a> Reader<'a> {
             Value::String(t) => t.as_str(),
             _ => return Err(self.located(f.index, &params.path(), "expected a string type")),
         };
+        if ty == "subdivide" {
+            return params.subdivide(children);
+        }
         let (kind, allowed): (NodeKind, &[&str]) = match ty {
             "union" => (NodeKind::Union, &["children"]),
             "intersection" => (NodeKind::Intersection, &["children"]),

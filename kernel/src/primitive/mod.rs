@@ -40,6 +40,7 @@ pub use plane::HalfSpace;
 pub use polyhedron::{
     MeshResolver, MeshSolid, MeshSolidError, MeshSource, NoMeshResolver, Platonic,
 };
+pub use polyhedron::{SubdivisionInput, SubdivisionRequest, SubdivisionScheme};
 pub use quadric::{Ellipsoid, Quadric};
 pub use sphere::Sphere;
 pub use sweep::{Extrude, Loft, Revolve, Ruled, Sweep};

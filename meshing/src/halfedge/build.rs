@@ -34,6 +34,18 @@ impl HalfEdgeMesh {
     pub fn from_polygons(positions: Vec<DVec3>, faces: &[Vec<u32>]) -> Result<Self, HalfEdgeError> {
         build(positions, faces)
     }
+
+    /// The half-edge mesh of faces stored in any way that gives each face's vertex loop:
+    /// fixed-size arrays (`[u32; 4]` quads), vectors... Checks as [`HalfEdgeMesh::from_indexed`].
+    ///
+    /// # Errors
+    /// As [`HalfEdgeMesh::from_indexed`].
+    pub fn from_faces<F: AsRef<[u32]>>(
+        positions: Vec<DVec3>,
+        faces: &[F],
+    ) -> Result<Self, HalfEdgeError> {
+        build(positions, faces)
+    }
 }
 
 /// Builds the mesh; `faces` are vertex loops.

@@ -9,8 +9,10 @@
 //! Plain floating-point separation tests with a safe margin (`filter.rs`) settle most pairs
 //! before any exact predicate: in flat regions neighbours are exactly coplanar, and an exact
 //! zero is the slowest case of adaptive predicates.
-//! Touching counts as meeting. Exactly collinear triangles are skipped (they are degenerate
-//! faces); triangles with unusable indices are not in the tree.
+//! Touching counts as meeting. Sharing means sharing a vertex index: two distinct vertices at
+//! the same position (an unwelded seam) touch, so their triangles count. Exactly collinear
+//! triangles are skipped (they are degenerate faces); triangles with unusable indices are not in
+//! the tree.
 //!
 //! The count and the examples (the smallest pairs) do not depend on the thread count.
 

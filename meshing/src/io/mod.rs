@@ -11,10 +11,14 @@
 //!
 //! Writers go through [`write_atomic`]: a failed write leaves no partial file behind and an
 //! existing file untouched.
+//!
+//! [`read_polygon_mesh`] and [`write_polygon_mesh`] do the same for a [`PolygonMesh`], keeping
+//! polygonal faces where the format has them (OBJ, OFF, PLY).
 
 mod atomic;
 mod bytes;
 mod error;
+mod faces;
 mod glb;
 mod obj;
 mod obj_scan;
@@ -22,6 +26,7 @@ mod off;
 mod ply;
 mod ply_header;
 mod polygon;
+mod polygon_mesh;
 mod resolver;
 mod stl;
 mod stored;
@@ -30,6 +35,8 @@ mod threemf;
 mod weld;
 mod zip;
 
+#[cfg(test)]
+mod polygon_mesh_tests;
 #[cfg(test)]
 mod tests;
 
@@ -41,6 +48,10 @@ use crate::IndexedMesh;
 pub use atomic::write_atomic;
 pub use error::{Location, MeshIoError};
 pub use polygon::{PolygonError, newell_normal, triangulate_polygon};
+pub use polygon_mesh::{
+    PolygonMesh, read_polygon_mesh, read_polygon_mesh_bytes, write_polygon_mesh,
+    write_polygon_mesh_with,
+};
 pub use resolver::FileMeshResolver;
 pub use stored::{encode_mesh, stored_mesh};
 pub use threemf::MODEL_PATH as THREEMF_MODEL_PATH;

@@ -7,7 +7,8 @@
 //! the vertices of each object separately, a vertex shared by two objects is re-joined by
 //! position (bit-identical positions only, and only across objects). Vertices come out in
 //! order of first use by a face (file order for most files); vertices no face uses are dropped. Polygonal faces are triangulated by
-//! [`super::triangulate_polygon`]; a face that cannot be is reported at its line.
+//! [`super::triangulate_polygon`] (or kept as polygons by [`read_faces`] with a polygon sink); a
+//! face that cannot be is reported at its line.
 //!
 //! Without its `use_f64` feature `tobj` reads coordinates as `f32`, so OBJ positions have
 //! single precision (exact for values an `f32` represents); the writer still prints full
@@ -17,16 +18,28 @@ use std::io::{self, Write};
 
 use glam::DVec3;
 
+use super::faces::FaceSink;
 use super::obj_scan::{self, Bound, FaceLine};
 use super::weld::Welder;
-use super::{Location, MeshIoError, triangulate_polygon};
+use super::{Location, MeshIoError};
 use crate::IndexedMesh;
 
 /// Reads an OBJ file.
 pub(super) fn read(bytes: &[u8], name: &str) -> Result<IndexedMesh, MeshIoError> {
+    let mut triangles = Vec::new();
+    let positions = read_faces(bytes, name, &mut triangles)?;
+    Ok(IndexedMesh::new(positions, triangles))
+}
+
+/// Reads an OBJ file's faces into `sink`; returns the positions.
+pub(super) fn read_faces(
+    bytes: &[u8],
+    name: &str,
+    sink: &mut dyn FaceSink,
+) -> Result<Vec<DVec3>, MeshIoError> {
     let face_lines = obj_scan::scan(bytes, name, Bound::WholeFile)?;
     let models = load_models(bytes, name)?;
-    assemble(&models, &face_lines, name)
+    assemble(&models, &face_lines, name, sink)
 }
 
 /// Parses with `tobj`: polygons kept as polygons, positions indexed on their own, no materials.
@@ -59,14 +72,14 @@ fn locate(bytes: &[u8], name: &str, error: tobj::LoadError) -> MeshIoError {
     }
 }
 
-/// Merges the models into one mesh and triangulates their faces.
+/// Merges the models into one mesh and gives their faces to `sink`.
 fn assemble(
     models: &[tobj::Model],
     face_lines: &[FaceLine],
     name: &str,
-) -> Result<IndexedMesh, MeshIoError> {
+    sink: &mut dyn FaceSink,
+) -> Result<Vec<DVec3>, MeshIoError> {
     let mut welder = Welder::default();
-    let mut triangles = Vec::new();
     let mut lines = face_lines.iter();
     let mismatch = || MeshIoError::invalid(name, "tobj returned other faces than the file has");
     for model in models {
@@ -81,7 +94,7 @@ fn assemble(
                 .map(|&i| local_to_global.get(i as usize).copied())
                 .collect::<Option<Vec<u32>>>()
                 .ok_or_else(mismatch)?;
-            triangulate_polygon(welder.positions(), &global, &mut triangles).map_err(|e| {
+            sink.add(welder.positions(), &global).map_err(|e| {
                 MeshIoError::parse(name, Location::Line(face_line.line), e.to_string())
             })?;
         }
@@ -89,20 +102,20 @@ fn assemble(
     if lines.next().is_some() {
         return Err(mismatch());
     }
-    Ok(drop_unused(welder.into_positions(), triangles))
+    Ok(drop_unused(welder.into_positions(), sink.corners_mut()))
 }
 
-/// Drops the vertices no triangle uses (the points of dropped polylines), keeping the order of
-/// the others.
-fn drop_unused(positions: Vec<DVec3>, mut triangles: Vec<[u32; 3]>) -> IndexedMesh {
+/// Drops the vertices no face uses (the points of dropped polylines), keeping the order of the
+/// others and renumbering `corners`.
+fn drop_unused(positions: Vec<DVec3>, corners: &mut [u32]) -> Vec<DVec3> {
     let mut used = vec![false; positions.len()];
-    for &corner in triangles.iter().flatten() {
+    for &corner in corners.iter() {
         if let Some(flag) = used.get_mut(corner as usize) {
             *flag = true;
         }
     }
     if used.iter().all(|&u| u) {
-        return IndexedMesh::new(positions, triangles);
+        return positions;
     }
     let mut new_index = vec![0u32; positions.len()];
     let mut kept = Vec::with_capacity(positions.len());
@@ -112,10 +125,10 @@ fn drop_unused(positions: Vec<DVec3>, mut triangles: Vec<[u32; 3]>) -> IndexedMe
             kept.push(position);
         }
     }
-    for corner in triangles.iter_mut().flatten() {
+    for corner in corners.iter_mut() {
         *corner = new_index.get(*corner as usize).copied().unwrap_or(*corner);
     }
-    IndexedMesh::new(kept, triangles)
+    kept
 }
 
 /// Adds the vertices of one model; a position seen in an earlier model is that model's vertex.
@@ -162,19 +175,33 @@ fn face_slices(mesh: &tobj::Mesh) -> Option<Vec<&[u32]>> {
 
 /// Writes `v x y z` and 1-based `f a b c` lines under a comment header.
 pub(super) fn write(out: &mut dyn Write, mesh: &IndexedMesh) -> io::Result<()> {
+    write_faces(out, &mesh.positions, &mesh.triangles, "triangles")
+}
+
+/// Writes `v x y z` and 1-based `f a b c …` lines (faces of any size) under a comment header
+/// that counts the faces as `noun`.
+pub(super) fn write_faces<F: AsRef<[u32]>>(
+    out: &mut dyn Write,
+    positions: &[DVec3],
+    faces: &[F],
+    noun: &str,
+) -> io::Result<()> {
     writeln!(out, "# written by solidkit")?;
     writeln!(
         out,
-        "# {} vertices, {} triangles",
-        mesh.positions.len(),
-        mesh.triangles.len()
+        "# {} vertices, {} {noun}",
+        positions.len(),
+        faces.len()
     )?;
-    for p in &mesh.positions {
+    for p in positions {
         writeln!(out, "v {} {} {}", p.x, p.y, p.z)?;
     }
-    for [a, b, c] in &mesh.triangles {
-        let [a, b, c] = [a, b, c].map(|&i| u64::from(i) + 1);
-        writeln!(out, "f {a} {b} {c}")?;
+    for face in faces {
+        out.write_all(b"f")?;
+        for &i in face.as_ref() {
+            write!(out, " {}", u64::from(i) + 1)?;
+        }
+        writeln!(out)?;
     }
     Ok(())
 }

@@ -4,15 +4,17 @@
 //! are ignored), a `VERTICES FACES EDGES` counts line (possibly on the header line), one vertex
 //! per line (`x y z`, extra values ignored), one face per line (`n i0 ... i(n-1)`, 0-based,
 //! optional color values after the indices ignored). `#` starts a comment anywhere; blank lines
-//! are skipped. Polygonal faces are triangulated by [`super::triangulate_polygon`].
+//! are skipped. Polygonal faces are triangulated by [`super::triangulate_polygon`] (or kept as
+//! polygons by [`read_faces`] with a polygon sink).
 
 use std::collections::HashSet;
 use std::io::{self, Write};
 
 use glam::DVec3;
 
+use super::faces::FaceSink;
 use super::text::{capped_capacity, lines, parse_coordinate, parse_i64, show, words};
-use super::{Location, MeshIoError, triangulate_polygon};
+use super::{Location, MeshIoError};
 use crate::IndexedMesh;
 
 /// A line with content: its number and its words, comments removed.
@@ -20,6 +22,17 @@ type ContentLine<'a> = (usize, Vec<&'a [u8]>);
 
 /// Reads an OFF file.
 pub(super) fn read(bytes: &[u8], name: &str) -> Result<IndexedMesh, MeshIoError> {
+    let mut triangles = Vec::new();
+    let positions = read_faces(bytes, name, &mut triangles)?;
+    Ok(IndexedMesh::new(positions, triangles))
+}
+
+/// Reads an OFF file's faces into `sink`; returns the positions.
+pub(super) fn read_faces(
+    bytes: &[u8],
+    name: &str,
+    sink: &mut dyn FaceSink,
+) -> Result<Vec<DVec3>, MeshIoError> {
     let mut reader = OffReader {
         name,
         lines: Box::new(content_lines(bytes)),
@@ -31,13 +44,11 @@ pub(super) fn read(bytes: &[u8], name: &str) -> Result<IndexedMesh, MeshIoError>
     for _ in 0..vertex_count {
         positions.push(reader.vertex()?);
     }
-    let capacity = capped_capacity(face_count, bytes.len(), 8);
-    let mut triangles = Vec::with_capacity(capacity);
     for _ in 0..face_count {
-        reader.face(&positions, &mut triangles)?;
+        reader.face(&positions, sink)?;
     }
     reader.end()?;
-    Ok(IndexedMesh::new(positions, triangles))
+    Ok(positions)
 }
 
 /// The non-blank lines with comments removed.
@@ -108,10 +119,11 @@ impl<'a> OffReader<'a> {
     }
 
     /// One face line: `n i0 ... i(n-1)` and ignored color values.
-    fn face(&mut self, positions: &[DVec3], out: &mut Vec<[u32; 3]>) -> Result<(), MeshIoError> {
+    fn face(&mut self, positions: &[DVec3], out: &mut dyn FaceSink) -> Result<(), MeshIoError> {
         let (line, words) = self.next_line("a face line 'N i0 i1 ...'")?;
         let corners = face_corners(&words, positions.len()).map_err(|m| self.error(line, m))?;
-        triangulate_polygon(positions, &corners, out).map_err(|e| self.error(line, e.to_string()))
+        out.add(positions, &corners)
+            .map_err(|e| self.error(line, e.to_string()))
     }
 
     /// Nothing may follow the last face.
@@ -176,30 +188,46 @@ fn face_corners(words: &[&[u8]], vertex_count: usize) -> Result<Vec<u32>, String
 
 /// Writes OFF: header, counts (with the number of distinct edges), vertices, triangles.
 pub(super) fn write(out: &mut dyn Write, mesh: &IndexedMesh) -> io::Result<()> {
+    write_faces(out, &mesh.positions, &mesh.triangles)
+}
+
+/// Writes OFF with faces of any size.
+pub(super) fn write_faces<F: AsRef<[u32]>>(
+    out: &mut dyn Write,
+    positions: &[DVec3],
+    faces: &[F],
+) -> io::Result<()> {
     writeln!(out, "OFF")?;
     writeln!(out, "# written by solidkit")?;
     writeln!(
         out,
         "{} {} {}",
-        mesh.positions.len(),
-        mesh.triangles.len(),
-        edge_count(mesh)
+        positions.len(),
+        faces.len(),
+        edge_count(faces)
     )?;
-    for p in &mesh.positions {
+    for p in positions {
         writeln!(out, "{} {} {}", p.x, p.y, p.z)?;
     }
-    for [a, b, c] in &mesh.triangles {
-        writeln!(out, "3 {a} {b} {c}")?;
+    for face in faces {
+        let face = face.as_ref();
+        write!(out, "{}", face.len())?;
+        for i in face {
+            write!(out, " {i}")?;
+        }
+        writeln!(out)?;
     }
     Ok(())
 }
 
 /// The number of distinct undirected edges.
-fn edge_count(mesh: &IndexedMesh) -> usize {
-    let edges: HashSet<(u32, u32)> = mesh
-        .triangles
+fn edge_count<F: AsRef<[u32]>>(faces: &[F]) -> usize {
+    let edges: HashSet<(u32, u32)> = faces
         .iter()
-        .flat_map(|&[a, b, c]| [(a, b), (b, c), (c, a)])
+        .flat_map(|face| {
+            let face = face.as_ref();
+            (0..face.len()).map(move |k| (face[k], face[(k + 1) % face.len()]))
+        })
         .map(|(a, b)| (a.min(b), a.max(b)))
         .collect();
     edges.len()

@@ -4,7 +4,8 @@
 //! The `vertex` element must have scalar `x`, `y` and `z` properties of any type; the `face`
 //! element, if present, a list property `vertex_indices` (or `vertex_index`) with integer items.
 //! Every other property and element is read past and ignored. Elements may come in any order:
-//! faces are triangulated by [`super::triangulate_polygon`] once the whole body is read.
+//! faces are triangulated by [`super::triangulate_polygon`] (or kept as polygons by
+//! [`read_faces`] with a polygon sink) once the whole body is read.
 //! ASCII values are read as `f64` whatever their declared type.
 
 use std::io::{self, Write};
@@ -12,13 +13,25 @@ use std::io::{self, Write};
 use glam::DVec3;
 
 use super::bytes::ByteCursor;
+use super::faces::FaceSink;
 use super::ply_header::{BodyFormat, Element, Header, Property, ScalarType, parse_header};
 use super::text::{Tokens, capped_capacity, parse_f64, parse_i64, show};
-use super::{Encoding, Location, MeshIoError, triangulate_polygon};
+use super::{Encoding, Location, MeshIoError};
 use crate::IndexedMesh;
 
 /// Reads a PLY file.
 pub(super) fn read(bytes: &[u8], name: &str) -> Result<IndexedMesh, MeshIoError> {
+    let mut triangles = Vec::new();
+    let positions = read_faces(bytes, name, &mut triangles)?;
+    Ok(IndexedMesh::new(positions, triangles))
+}
+
+/// Reads a PLY file's faces into `sink`; returns the positions.
+pub(super) fn read_faces(
+    bytes: &[u8],
+    name: &str,
+    sink: &mut dyn FaceSink,
+) -> Result<Vec<DVec3>, MeshIoError> {
     let header = parse_header(bytes, name)?;
     let layout = Layout::of(&header, name)?;
     let body = bytes.get(header.body_start..).unwrap_or_default();
@@ -43,7 +56,7 @@ pub(super) fn read(bytes: &[u8], name: &str) -> Result<IndexedMesh, MeshIoError>
         reader.element(element, header.format, body.len())?;
     }
     reader.end_of_body()?;
-    reader.into_mesh()
+    reader.into_faces(sink)
 }
 
 /// Where the needed properties are.
@@ -381,40 +394,57 @@ impl BodyReader<'_, '_> {
         self.values.at_end().map_err(|m| self.error(m))
     }
 
-    fn into_mesh(self) -> Result<IndexedMesh, MeshIoError> {
-        let mut triangles = Vec::with_capacity(self.faces.ends.len());
+    fn into_faces(self, sink: &mut dyn FaceSink) -> Result<Vec<DVec3>, MeshIoError> {
         let mut start = 0;
         for &(end, location) in &self.faces.ends {
             let corners = self.faces.corners.get(start..end).unwrap_or_default();
-            triangulate_polygon(&self.positions, corners, &mut triangles)
+            sink.add(&self.positions, corners)
                 .map_err(|e| MeshIoError::parse(self.name, location, e.to_string()))?;
             start = end;
         }
-        Ok(IndexedMesh::new(self.positions, triangles))
+        Ok(self.positions)
     }
 }
 
 /// Writes `mesh` as binary little endian (doubles) or ASCII PLY.
 pub(super) fn write(out: &mut dyn Write, mesh: &IndexedMesh, encoding: Encoding) -> io::Result<()> {
+    write_faces(out, &mesh.positions, &mesh.triangles, encoding)
+}
+
+/// Writes faces of any size as binary little endian (doubles) or ASCII PLY; the list length is
+/// a `uchar` when every face has at most 255 corners, a `uint` otherwise.
+pub(super) fn write_faces<F: AsRef<[u32]>>(
+    out: &mut dyn Write,
+    positions: &[DVec3],
+    faces: &[F],
+    encoding: Encoding,
+) -> io::Result<()> {
     let binary = encoding == Encoding::Binary;
-    write_header(out, mesh, binary)?;
+    let wide = faces.iter().any(|f| f.as_ref().len() > 255);
+    write_header(out, positions.len(), faces.len(), wide, binary)?;
     if binary {
-        write_binary_body(out, mesh)
+        write_binary_body(out, positions, faces, wide)
     } else {
-        write_ascii_body(out, mesh)
+        write_ascii_body(out, positions, faces)
     }
 }
 
 /// `int` indices where they fit (most widely read), `uint` otherwise.
-fn index_type(mesh: &IndexedMesh) -> &'static str {
-    if i32::try_from(mesh.positions.len()).is_ok() {
+fn index_type(vertex_count: usize) -> &'static str {
+    if i32::try_from(vertex_count).is_ok() {
         "int"
     } else {
         "uint"
     }
 }
 
-fn write_header(out: &mut dyn Write, mesh: &IndexedMesh, binary: bool) -> io::Result<()> {
+fn write_header(
+    out: &mut dyn Write,
+    vertex_count: usize,
+    face_count: usize,
+    wide: bool,
+    binary: bool,
+) -> io::Result<()> {
     let (format, scalar) = if binary {
         ("binary_little_endian", "double")
     } else {
@@ -423,40 +453,60 @@ fn write_header(out: &mut dyn Write, mesh: &IndexedMesh, binary: bool) -> io::Re
     writeln!(out, "ply")?;
     writeln!(out, "format {format} 1.0")?;
     writeln!(out, "comment written by solidkit")?;
-    writeln!(out, "element vertex {}", mesh.positions.len())?;
+    writeln!(out, "element vertex {vertex_count}")?;
     for axis in ["x", "y", "z"] {
         writeln!(out, "property {scalar} {axis}")?;
     }
-    writeln!(out, "element face {}", mesh.triangles.len())?;
+    writeln!(out, "element face {face_count}")?;
+    let count = if wide { "uint" } else { "uchar" };
     writeln!(
         out,
-        "property list uchar {} vertex_indices",
-        index_type(mesh)
+        "property list {count} {} vertex_indices",
+        index_type(vertex_count)
     )?;
     writeln!(out, "end_header")
 }
 
-fn write_binary_body(out: &mut dyn Write, mesh: &IndexedMesh) -> io::Result<()> {
-    for p in &mesh.positions {
+fn write_binary_body<F: AsRef<[u32]>>(
+    out: &mut dyn Write,
+    positions: &[DVec3],
+    faces: &[F],
+    wide: bool,
+) -> io::Result<()> {
+    for p in positions {
         for c in p.to_array() {
             out.write_all(&c.to_le_bytes())?;
         }
     }
-    for triangle in &mesh.triangles {
-        out.write_all(&[3])?;
-        for i in triangle {
+    for face in faces {
+        let face = face.as_ref();
+        if wide {
+            out.write_all(&(face.len() as u32).to_le_bytes())?;
+        } else {
+            out.write_all(&[face.len() as u8])?;
+        }
+        for i in face {
             out.write_all(&i.to_le_bytes())?;
         }
     }
     Ok(())
 }
 
-fn write_ascii_body(out: &mut dyn Write, mesh: &IndexedMesh) -> io::Result<()> {
-    for p in &mesh.positions {
+fn write_ascii_body<F: AsRef<[u32]>>(
+    out: &mut dyn Write,
+    positions: &[DVec3],
+    faces: &[F],
+) -> io::Result<()> {
+    for p in positions {
         writeln!(out, "{} {} {}", p.x, p.y, p.z)?;
     }
-    for [a, b, c] in &mesh.triangles {
-        writeln!(out, "3 {a} {b} {c}")?;
+    for face in faces {
+        let face = face.as_ref();
+        write!(out, "{}", face.len())?;
+        for i in face {
+            write!(out, " {i}")?;
+        }
+        writeln!(out)?;
     }
     Ok(())
 }

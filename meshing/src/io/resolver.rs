@@ -1,11 +1,20 @@
 //! The mesh-file resolver of JSON trees: `mesh` nodes name their file by a path, read here with
 //! [`read_mesh`](super::read_mesh) relative to a base folder (the folder of the tree file), so a
-//! tree and its meshes can move together.
+//! tree and its meshes can move together. It also carries out the `subdivide` nodes the kernel
+//! records: the child's polygon mesh (inline faces, or a file read with its polygons by
+//! [`read_polygon_mesh`](super::read_polygon_mesh)) becomes a [`HalfEdgeMesh`], is subdivided by
+//! [`crate::subdivision`] within the default [`Limits`], and goes back triangulated
+//! ([`PolygonMesh::triangulated`]).
 
 use std::path::{Path, PathBuf};
 
 use solidkit_kernel::IndexedMesh;
 use solidkit_kernel::json::MeshResolver;
+use solidkit_kernel::primitive::{SubdivisionInput, SubdivisionRequest};
+
+use super::PolygonMesh;
+use crate::HalfEdgeMesh;
+use crate::subdivision::{Limits, subdivide};
 
 /// Reads the mesh files of `mesh` nodes; relative paths are taken from `base`, absolute ones as
 /// they are.
@@ -34,6 +43,21 @@ impl FileMeshResolver {
 impl MeshResolver for FileMeshResolver {
     fn load(&self, path: &str) -> Result<IndexedMesh, String> {
         super::read_mesh(&self.resolve(path)).map_err(|e| e.to_string())
+    }
+
+    fn subdivide(&self, request: &SubdivisionRequest<'_>) -> Result<IndexedMesh, String> {
+        let mesh = match request.input {
+            SubdivisionInput::Faces { vertices, faces } => {
+                HalfEdgeMesh::from_polygons(vertices.to_vec(), faces)
+            }
+            SubdivisionInput::File { path } => super::read_polygon_mesh(&self.resolve(path))
+                .map_err(|e| e.to_string())?
+                .to_half_edge(),
+        }
+        .map_err(|e| format!("cannot subdivide the child: {e}"))?;
+        let result = subdivide(&mesh, request.scheme, request.levels, &Limits::default())
+            .map_err(|e| e.to_string())?;
+        Ok(PolygonMesh::from_half_edge(&result).triangulated())
     }
 }
 

@@ -16,6 +16,8 @@ mod control;
 mod subdivide;
 
 pub use control::{CancelToken, Cancelled, MeshStats, Progress, SparseOptions};
+/// The surface leaf bricks with their pruned programs (also used by dual contouring).
+pub(crate) use subdivide::surface_bricks as surface_nodes;
 
 use crate::IndexedMesh;
 use crate::marching_cubes::{GridSpec, SampleGrid, polygonize_into};

@@ -119,11 +119,14 @@ impl Params<'_, '_> {
                 _ => (key_at("faces"), e.to_string()),
             },
             MeshSolidError::Load { .. } => (key_at("path"), e.to_string()),
+            MeshSolidError::NotPolyhedral { .. } | MeshSolidError::Subdivision(_) => {
+                (key_at("child"), e.to_string())
+            }
         };
         self.fail(at, &key, message)
     }
 
-    fn string(&self, key: &str) -> R<&str> {
+    pub(super) fn string(&self, key: &str) -> R<&str> {
         let i = self.at(key)?;
         match &self.reader.doc.values[i as usize] {
             Value::String(s) => Ok(s.as_str()),

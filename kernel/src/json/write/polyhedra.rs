@@ -1,9 +1,11 @@
 //! Writing the polyhedral node types back as they were read: `platonic` with the size key that
 //! was given, `polyhedron` with its vertices and faces, `mesh` with its path, `prism` with its
-//! polygon, holes (when there are any) and direction.
+//! polygon, holes (when there are any) and direction, `subdivide` with its scheme, levels and
+//! polyhedral child.
 
 use super::{num, string, vec3};
 use crate::primitive::{MeshSolid, MeshSource, Platonic};
+use crate::solid::NodeKind;
 use glam::DVec2;
 
 /// The parameter members of a `platonic` node.
@@ -42,6 +44,15 @@ pub(super) fn mesh(m: &MeshSolid) -> String {
                 s += &format!(", \"holes\": [{}]", h.join(", "));
             }
             s + &format!(", \"direction\": {}", vec3(p.direction))
+        }
+        MeshSource::Subdivided {
+            scheme,
+            levels,
+            child,
+        } => {
+            // The child is a polyhedral leaf (never itself subdivided): one fixed nesting level.
+            let child = super::members(&NodeKind::Primitive((**child).clone()));
+            format!("\"scheme\": \"{scheme}\", \"levels\": {levels}, \"child\": {{{child}}}")
         }
     }
 }

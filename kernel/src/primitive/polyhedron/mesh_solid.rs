@@ -14,8 +14,10 @@
 
 use super::super::{PrimitiveError, Shape, lipschitz_interval};
 use super::resolver::MeshResolver;
+use super::subdivided::SubdivisionScheme;
 use super::tree::MeshTree;
 use crate::polyhedra::{Polyhedron, PolyhedronError, Prism};
+use crate::primitive::Primitive;
 use crate::triangulate::triangulate_face;
 use crate::{Aabb, IndexedMesh, Interval};
 use glam::DVec3;
@@ -35,6 +37,18 @@ pub enum MeshSolidError {
         /// Why.
         message: String,
     },
+    /// The child of a `subdivide` node is not a polyhedral primitive.
+    #[error(
+        "subdivide needs a polyhedron, mesh, prism or platonic child (a subdivide child: give more levels instead), found {found}"
+    )]
+    NotPolyhedral {
+        /// The JSON type of the child that was given.
+        found: &'static str,
+    },
+    /// The subdivision failed (non-manifold child, a non-triangle child for Loop or butterfly,
+    /// too many faces, no subdivision hook...).
+    #[error("{0}")]
+    Subdivision(String),
 }
 
 /// Where a mesh solid's triangles come from.
@@ -54,6 +68,16 @@ pub enum MeshSource {
     },
     /// A prism (JSON `prism`).
     Prism(Prism),
+    /// A polyhedral primitive's polygon mesh subdivided (JSON `subdivide`).
+    Subdivided {
+        /// The scheme.
+        scheme: SubdivisionScheme,
+        /// How many times it was applied.
+        levels: u32,
+        /// The polyhedral child as written in the tree (`polyhedron`, `mesh`, `prism` or
+        /// `platonic`; never itself subdivided, so this nests one level only).
+        child: Box<Primitive>,
+    },
 }
 
 impl MeshSource {
@@ -63,6 +87,7 @@ impl MeshSource {
             MeshSource::Faces { .. } => "polyhedron",
             MeshSource::File { .. } => "mesh",
             MeshSource::Prism(_) => "prism",
+            MeshSource::Subdivided { .. } => "subdivide",
         }
     }
 }
@@ -130,7 +155,10 @@ impl MeshSolid {
         Self::with_source(MeshSource::Prism(prism), &mesh)
     }
 
-    fn with_source(source: MeshSource, mesh: &IndexedMesh) -> Result<Self, MeshSolidError> {
+    pub(super) fn with_source(
+        source: MeshSource,
+        mesh: &IndexedMesh,
+    ) -> Result<Self, MeshSolidError> {
         MeshTree::check(mesh)?;
         Ok(MeshSolid {
             source: Arc::new(source),

@@ -16,14 +16,18 @@ mod mesh_solid;
 mod nearest;
 mod platonic;
 mod resolver;
+mod subdivided;
 mod tree;
 mod winding;
 
 #[cfg(test)]
 mod json_tests;
 #[cfg(test)]
+mod subdivided_tests;
+#[cfg(test)]
 mod tests;
 
 pub use mesh_solid::{MeshSolid, MeshSolidError, MeshSource};
 pub use platonic::Platonic;
 pub use resolver::{MeshResolver, NoMeshResolver};
+pub use subdivided::{SubdivisionInput, SubdivisionRequest, SubdivisionScheme};

@@ -1,15 +1,29 @@
-//! Loading the mesh files named by `mesh` nodes of JSON trees.
+//! Loading the mesh files named by `mesh` nodes of JSON trees, and subdividing the polygon meshes
+//! of `subdivide` nodes.
 //!
-//! The kernel reads no mesh files itself (the readers live in `solidkit-meshing`, which depends on
-//! the kernel), so the JSON reader asks a [`MeshResolver`] for them; `solidkit-meshing` provides
-//! one that reads files relative to the tree file's folder.
+//! The kernel reads no mesh files and runs no subdivision itself (the readers and the half-edge
+//! mesh live in `solidkit-meshing`, which depends on the kernel), so the JSON reader asks a
+//! [`MeshResolver`] for them; `solidkit-meshing` provides one (`io::FileMeshResolver`) that reads
+//! files relative to the tree file's folder and subdivides on its half-edge mesh.
 
+use super::subdivided::SubdivisionRequest;
 use crate::IndexedMesh;
 
-/// Loads the mesh named by a `mesh` node's `path`.
+/// Loads the mesh named by a `mesh` node's `path`, and subdivides `subdivide` nodes.
 pub trait MeshResolver {
     /// The triangle mesh at `path` (as written in the tree), or a one-line reason why not.
     fn load(&self, path: &str) -> Result<IndexedMesh, String>;
+
+    /// The polygon mesh of `request` subdivided, as triangles counter-clockwise from outside, or
+    /// a one-line reason why not. The default has no subdivision and says so.
+    fn subdivide(&self, request: &SubdivisionRequest<'_>) -> Result<IndexedMesh, String> {
+        let _ = request;
+        Err(
+            "subdivision needs a resolver that runs it (read the tree with json::from_str_with and \
+             solidkit_meshing::io::FileMeshResolver)"
+                .into(),
+        )
+    }
 }
 
 /// The resolver of [`json::from_str`](crate::json::from_str): it loads nothing and says that mesh

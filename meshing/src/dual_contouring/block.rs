@@ -1,0 +1,262 @@
+//! One block of cells (a leaf brick of the sparse octree, or a tile of a dense grid): from its
+//! sample values, the crossings of every sign-changing edge between its samples, one QEF vertex per
+//! surface patch of each cell, and the crossing edges it owns (each becomes one polygon).
+//!
+//! Ownership of edges follows the marching-cubes bricks: a block owns the edges whose lower sample
+//! has local coordinates below the block size (or up to its extent for the last block along an
+//! axis). Edges on block faces are searched by both blocks, with programs that agree there, so
+//! both see the same crossings.
+
+use super::crossing::{CrossingScratch, DcField, EdgeQuery, refine};
+use super::patches::{face_edges, patch_table};
+use super::qef::Qef;
+use crate::marching_cubes::table::edge_origin;
+use crate::marching_cubes::{GridSpec, inside};
+use glam::DVec3;
+
+/// Marks a cell without surface in [`Block::first`].
+pub(crate) const NO_VERTEX: u32 = u32::MAX;
+
+/// Block-local id of the edge along `axis` from local sample `(i, j, k)` (each in `0..=8`).
+#[inline]
+pub(crate) fn local_edge(s: [usize; 3], axis: usize) -> u16 {
+    ((s[2] << 10) | (s[1] << 6) | (s[0] << 2) | axis) as u16
+}
+
+/// A crossing edge a block owns.
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct OwnedEdge {
+    /// Local lower sample.
+    pub sample: [u8; 3],
+    /// Axis of the edge.
+    pub axis: u8,
+    /// The lower sample is inside.
+    pub lower_inside: bool,
+    /// Crossing point.
+    pub point: DVec3,
+    /// Unit normal there.
+    pub normal: DVec3,
+}
+
+/// What one block contributes.
+#[derive(Debug, Default)]
+pub(crate) struct Block {
+    /// Block coordinates (cell minimum / block size).
+    pub coord: [usize; 3],
+    /// Global index of the block's first cell.
+    pub min: [usize; 3],
+    /// Cells per axis.
+    pub extent: [usize; 3],
+    /// Sign mask of every cell (x fastest).
+    pub masks: Vec<u8>,
+    /// Local number of each cell's first patch vertex ([`NO_VERTEX`] without surface).
+    pub first: Vec<u32>,
+    /// Patch vertices.
+    pub vertices: Vec<DVec3>,
+    /// QEF of each patch vertex (kept for adaptive simplification only).
+    pub qefs: Vec<Qef>,
+    /// Owned crossing edges.
+    pub edges: Vec<OwnedEdge>,
+    /// Crossings on ambiguous faces of the block's cells, by local edge id (sorted, unique).
+    pub face_crossings: Vec<(u16, DVec3, DVec3)>,
+    /// Inside flags of the samples (kept for adaptive simplification only).
+    pub inside: Vec<u8>,
+    /// Samples evaluated.
+    pub samples: u64,
+    /// Seconds of field evaluation.
+    pub evaluation_s: f64,
+    /// The program valid in the block (sparse path).
+    pub program: Option<std::sync::Arc<solidkit_kernel::Program>>,
+}
+
+impl Block {
+    /// Local index of cell `c` (local coordinates).
+    pub fn cell_index(&self, c: [usize; 3]) -> usize {
+        c[0] + self.extent[0] * (c[1] + self.extent[1] * c[2])
+    }
+}
+
+/// Per-thread buffers.
+#[derive(Default)]
+pub(crate) struct BlockScratch<S> {
+    ids: Vec<u32>,
+    queries: Vec<EdgeQuery>,
+    keys: Vec<u32>,
+    crossings: Vec<(DVec3, DVec3)>,
+    search: CrossingScratch,
+    pub field: S,
+}
+
+/// Builds a block from its samples (`extent + 1` per axis, x fastest).
+#[allow(clippy::too_many_arguments)]
+pub(crate) fn build<F: DcField>(
+    field: &F,
+    spec: &GridSpec,
+    min: [usize; 3],
+    extent: [usize; 3],
+    block_size: usize,
+    values: &[f32],
+    keep: bool,
+    s: &mut BlockScratch<F::Scratch>,
+) -> Block {
+    let e = extent;
+    let n = [e[0] + 1, e[1] + 1, e[2] + 1];
+    let (nx, nxy) = (n[0], n[0] * n[1]);
+    let ins: Vec<u8> = values.iter().map(|&v| u8::from(inside(v))).collect();
+    let point = |l: [usize; 3]| spec.point(min[0] + l[0], min[1] + l[1], min[2] + l[2]);
+    // Every sign-changing edge between the block's samples.
+    s.ids.clear();
+    s.ids.resize(3 * nxy * n[2], NO_VERTEX);
+    s.queries.clear();
+    s.keys.clear();
+    for k in 0..n[2] {
+        for j in 0..n[1] {
+            for i in 0..n[0] {
+                let idx = i + nx * j + nxy * k;
+                let here = ins[idx];
+                let ends = [(i + 1 < n[0], 1), (j + 1 < n[1], nx), (k + 1 < n[2], nxy)];
+                for (axis, &(exists, step)) in ends.iter().enumerate() {
+                    if !exists || ins[idx + step] == here {
+                        continue;
+                    }
+                    let mut o = [i, j, k];
+                    o[axis] += 1;
+                    s.ids[3 * idx + axis] = s.queries.len() as u32;
+                    s.keys.push((3 * idx + axis) as u32);
+                    s.queries.push(EdgeQuery {
+                        a: point([i, j, k]),
+                        b: point(o),
+                        fa: values[idx],
+                        fb: values[idx + step],
+                    });
+                }
+            }
+        }
+    }
+    s.crossings.clear();
+    let start = std::time::Instant::now();
+    refine(
+        field,
+        &s.queries,
+        &mut s.crossings,
+        &mut s.search,
+        &mut s.field,
+    );
+    let evaluation_s = start.elapsed().as_secs_f64();
+    let table = patch_table();
+    let cells = e[0] * e[1] * e[2];
+    let mut b = Block {
+        coord: min.map(|m| m / block_size),
+        min,
+        extent,
+        masks: vec![0; cells],
+        first: vec![NO_VERTEX; cells],
+        samples: (nxy * n[2]) as u64,
+        evaluation_s,
+        ..Default::default()
+    };
+    let corner = [0, 1, nx, nx + 1, nxy, nxy + 1, nxy + nx, nxy + nx + 1];
+    let half = 0.5 * spec.cell;
+    let mut face_keys: Vec<u16> = Vec::new();
+    for k in 0..e[2] {
+        for j in 0..e[1] {
+            for i in 0..e[0] {
+                let base = i + nx * j + nxy * k;
+                let mut mask = 0u8;
+                for (c, off) in corner.iter().enumerate() {
+                    mask |= ins[base + off] << c;
+                }
+                let ci = i + e[0] * (j + e[1] * k);
+                b.masks[ci] = mask;
+                if mask == 0 || mask == 255 {
+                    continue;
+                }
+                b.first[ci] = b.vertices.len() as u32;
+                let lo = point([i, j, k]);
+                let hi = lo + DVec3::splat(spec.cell);
+                let patches = &table.edges[mask as usize];
+                for patch in patches {
+                    let mut q = Qef::new(lo + half);
+                    let (mut plo, mut phi) = (hi, lo);
+                    for &edge in patch {
+                        let (axis, o) = edge_origin(edge);
+                        let idx = base + o[0] + nx * o[1] + nxy * o[2];
+                        let (p, nrm) = s.crossings[s.ids[3 * idx + axis] as usize];
+                        q.add(p, nrm);
+                        plo = plo.min(p);
+                        phi = phi.max(p);
+                    }
+                    // A lone patch may sit anywhere in its cell (sharp features); several patches
+                    // each stay within the box of their own crossings, apart from each other.
+                    let (clo, chi) = if patches.len() == 1 {
+                        (lo, hi)
+                    } else {
+                        (plo, phi)
+                    };
+                    let (v, _) = q.solve(clo, chi);
+                    b.vertices.push(v);
+                    if keep {
+                        b.qefs.push(q);
+                    }
+                }
+                let amb = table.ambiguous[mask as usize];
+                if amb != 0 {
+                    for axis in 0..3 {
+                        for side in 0..2u8 {
+                            if amb >> (2 * axis + side as usize) & 1 == 0 {
+                                continue;
+                            }
+                            for edge in face_edges(axis, side) {
+                                let (ea, o) = edge_origin(edge);
+                                face_keys.push(local_edge([i + o[0], j + o[1], k + o[2]], ea));
+                            }
+                        }
+                    }
+                }
+            }
+        }
+    }
+    face_keys.sort_unstable();
+    face_keys.dedup();
+    b.face_crossings = face_keys
+        .into_iter()
+        .map(|key| {
+            let l = [
+                (key >> 2 & 15) as usize,
+                (key >> 6 & 15) as usize,
+                (key >> 10) as usize,
+            ];
+            let idx = l[0] + nx * l[1] + nxy * l[2];
+            let (p, nrm) = s.crossings[s.ids[3 * idx + (key & 3) as usize] as usize];
+            (key, p, nrm)
+        })
+        .collect();
+    // Owned crossing edges.
+    let owned = [0, 1, 2].map(|a| {
+        if min[a] + e[a] == spec.cells[a] {
+            e[a] + 1
+        } else {
+            block_size.min(e[a])
+        }
+    });
+    for (q, &key) in s.keys.iter().enumerate() {
+        let key = key as usize;
+        let (idx, axis) = (key / 3, key % 3);
+        let l = [idx % nx, idx / nx % n[1], idx / nxy];
+        if (0..3).any(|a| l[a] >= owned[a]) {
+            continue;
+        }
+        let (p, nrm) = s.crossings[q];
+        b.edges.push(OwnedEdge {
+            sample: l.map(|x| x as u8),
+            axis: axis as u8,
+            lower_inside: ins[idx] == 1,
+            point: p,
+            normal: nrm,
+        });
+    }
+    if keep {
+        b.inside = ins;
+    }
+    b
+}

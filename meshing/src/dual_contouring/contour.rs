@@ -1,0 +1,431 @@
+//! Global assembly: numbers the blocks' patch vertices, finds the four cells around every owned
+//! crossing edge and builds its polygon (a quad, or a longer polygon through split-face vertices),
+//! and places the split-face vertices.
+
+use super::block::{Block, NO_VERTEX, OwnedEdge, local_edge};
+use super::crossing::DcField;
+use super::patches::{NO_PATCH, edge_number, face_edges, face_segment, patch_table};
+use super::qef::Qef;
+use crate::marching_cubes::GridSpec;
+use crate::marching_cubes::table::edge_origin;
+use glam::DVec3;
+use rayon::prelude::*;
+use std::collections::HashMap;
+
+/// Finds a block by its coordinates: a dense table when small enough, else a hash map.
+pub(crate) enum BlockIndex {
+    Dense { dims: [usize; 3], slots: Vec<u32> },
+    Sparse(HashMap<[usize; 3], u32>),
+}
+
+impl BlockIndex {
+    pub fn new(blocks: &[Block], dims: [usize; 3]) -> Self {
+        let total = dims[0].saturating_mul(dims[1]).saturating_mul(dims[2]);
+        if total <= 1 << 22 {
+            let mut slots = vec![u32::MAX; total];
+            for (b, o) in blocks.iter().enumerate() {
+                slots[o.coord[0] + dims[0] * (o.coord[1] + dims[1] * o.coord[2])] = b as u32;
+            }
+            BlockIndex::Dense { dims, slots }
+        } else {
+            BlockIndex::Sparse(
+                blocks
+                    .iter()
+                    .enumerate()
+                    .map(|(b, o)| (o.coord, b as u32))
+                    .collect(),
+            )
+        }
+    }
+
+    pub fn get(&self, c: [usize; 3]) -> Option<usize> {
+        match self {
+            BlockIndex::Dense { dims, slots } => {
+                if (0..3).any(|a| c[a] >= dims[a]) {
+                    return None;
+                }
+                let s = slots[c[0] + dims[0] * (c[1] + dims[1] * c[2])];
+                (s != u32::MAX).then_some(s as usize)
+            }
+            BlockIndex::Sparse(map) => map.get(&c).map(|&b| b as usize),
+        }
+    }
+}
+
+/// One block's quads, and its polygons through split faces (with their crossing points).
+type BlockPolygons = (Vec<Quad>, Vec<(Vec<Corner>, DVec3)>);
+
+/// A split-face vertex: the face above `cell` along `axis`, and which of its two segments.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Hash)]
+pub(crate) struct FaceKey {
+    pub cell: [usize; 3],
+    pub axis: u8,
+    pub segment: u8,
+}
+
+/// A polygon corner before split-face vertices are numbered.
+#[derive(Debug, Clone, Copy)]
+pub(crate) enum Corner {
+    Vertex(u32),
+    Face(FaceKey),
+}
+
+/// The quad of one crossing edge: cell vertices counter-clockwise seen from outside.
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct Quad {
+    pub v: [u32; 4],
+    pub normal: DVec3,
+    /// Split along `v[1]`–`v[3]` (else along `v[0]`–`v[2]`).
+    pub other_diagonal: bool,
+}
+
+/// Field values for choosing quad diagonals: `block` is the block of a cell containing `p`, whose
+/// program is valid there.
+pub(crate) trait Probe: Sync {
+    /// Buffers of one worker.
+    type Scratch: Default + Send;
+    /// The field at `p`.
+    fn value(&self, block: &Block, p: DVec3, s: &mut Self::Scratch) -> f64;
+}
+
+/// Probes with each block's own (pruned) program.
+pub(crate) struct ProgramProbe;
+
+impl Probe for ProgramProbe {
+    type Scratch = Vec<f64>;
+
+    fn value(&self, block: &Block, p: DVec3, s: &mut Vec<f64>) -> f64 {
+        block
+            .program
+            .as_ref()
+            .expect("sparse blocks keep their program")
+            .value_with(p, s)
+    }
+}
+
+/// Probes one field everywhere.
+pub(crate) struct FieldProbe<'a, F>(pub &'a F);
+
+impl<F: DcField> Probe for FieldProbe<'_, F> {
+    type Scratch = F::Scratch;
+
+    fn value(&self, _: &Block, p: DVec3, s: &mut F::Scratch) -> f64 {
+        let (mut v, mut g) = ([0.0], [DVec3::ZERO]);
+        self.0.values_gradients(&[p], &mut v, &mut g, s);
+        v[0]
+    }
+}
+
+/// A polygon through split-face vertices; fanned from a centre vertex at the edge's crossing.
+#[derive(Debug, Clone)]
+pub(crate) struct Special {
+    pub corners: Vec<u32>,
+    pub point: DVec3,
+}
+
+/// Every vertex and polygon of a contour.
+#[derive(Debug, Default)]
+pub(crate) struct Contour {
+    /// Cell patch vertices (block by block), then split-face vertices.
+    pub positions: Vec<DVec3>,
+    /// First cell patch vertex of each block.
+    pub bases: Vec<u32>,
+    /// Quads, block by block.
+    pub quads: Vec<Vec<Quad>>,
+    /// Polygons through split faces.
+    pub specials: Vec<Special>,
+}
+
+/// A surface cell found through the block index.
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct CellRef {
+    pub block: usize,
+    pub local: usize,
+    pub mask: u8,
+    /// Global number of the cell's first patch vertex.
+    pub first: u32,
+}
+
+/// Looks up cells by global coordinates.
+pub(crate) struct Cells<'a> {
+    pub blocks: &'a [Block],
+    pub index: BlockIndex,
+    pub bases: Vec<u32>,
+    pub block_size: usize,
+}
+
+impl Cells<'_> {
+    pub fn get(&self, c: [usize; 3]) -> Option<CellRef> {
+        let b = self.index.get(c.map(|x| x / self.block_size))?;
+        let o = &self.blocks[b];
+        let l = [0, 1, 2].map(|a| c[a] - o.min[a]);
+        if (0..3).any(|a| l[a] >= o.extent[a]) {
+            return None;
+        }
+        let local = o.cell_index(l);
+        let first = o.first[local];
+        (first != NO_VERTEX).then(|| CellRef {
+            block: b,
+            local,
+            mask: o.masks[local],
+            first: self.bases[b] + first,
+        })
+    }
+}
+
+/// Builds the polygons of every block's owned edges and places the split-face vertices.
+pub(crate) fn assemble<P: Probe>(
+    blocks: &[Block],
+    spec: &GridSpec,
+    block_size: usize,
+    probe: &P,
+) -> Contour {
+    let dims = spec.cells.map(|c| c.div_ceil(block_size).max(1));
+    let mut bases = Vec::with_capacity(blocks.len());
+    let mut count = 0u32;
+    for b in blocks {
+        bases.push(count);
+        count += b.vertices.len() as u32;
+    }
+    let cells = Cells {
+        blocks,
+        index: BlockIndex::new(blocks, dims),
+        bases: bases.clone(),
+        block_size,
+    };
+    let per_block: Vec<BlockPolygons> = blocks
+        .par_iter()
+        .map_init(P::Scratch::default, |scratch, b| {
+            let mut quads = Vec::with_capacity(b.edges.len());
+            let mut specials = Vec::new();
+            for e in &b.edges {
+                match polygon(b, e, &cells, spec, probe, scratch) {
+                    Some(Ok(q)) => quads.push(q),
+                    Some(Err(corners)) => specials.push((corners, e.point)),
+                    None => {}
+                }
+            }
+            (quads, specials)
+        })
+        .collect();
+    let mut positions: Vec<DVec3> = Vec::with_capacity(count as usize);
+    for b in blocks {
+        positions.extend_from_slice(&b.vertices);
+    }
+    let mut keys: Vec<FaceKey> = per_block
+        .iter()
+        .flat_map(|(_, s)| s.iter().flat_map(|(c, _)| c.iter()))
+        .filter_map(|c| match c {
+            Corner::Face(k) => Some(*k),
+            Corner::Vertex(_) => None,
+        })
+        .collect();
+    keys.sort_unstable();
+    keys.dedup();
+    let face_base = positions.len() as u32;
+    for k in &keys {
+        positions.push(face_vertex(k, &cells, spec));
+    }
+    let mut quads = Vec::with_capacity(blocks.len());
+    let mut specials = Vec::new();
+    for (q, s) in per_block {
+        quads.push(q);
+        for (corners, point) in s {
+            let corners = corners
+                .iter()
+                .map(|c| match c {
+                    Corner::Vertex(v) => *v,
+                    Corner::Face(k) => {
+                        face_base + keys.binary_search(k).expect("face key listed") as u32
+                    }
+                })
+                .collect();
+            specials.push(Special { corners, point });
+        }
+    }
+    Contour {
+        positions,
+        bases,
+        quads,
+        specials,
+    }
+}
+
+/// The polygon around owned edge `e`: `Ok` for a plain quad, `Err` with split-face corners, `None`
+/// when a cell around it lies outside the grid.
+fn polygon<P: Probe>(
+    b: &Block,
+    e: &OwnedEdge,
+    cells: &Cells,
+    spec: &GridSpec,
+    probe: &P,
+    scratch: &mut P::Scratch,
+) -> Option<Result<Quad, Vec<Corner>>> {
+    let table = patch_table();
+    let axis = e.axis as usize;
+    let (u, v) = ((axis + 1) % 3, (axis + 2) % 3);
+    let g = [0, 1, 2].map(|a| b.min[a] + e.sample[a] as usize);
+    if g[u] == 0 || g[v] == 0 || g[u] > spec.cells[u] || g[v] > spec.cells[v] {
+        return None;
+    }
+    // Cells counter-clockwise around +axis; reversed when the normal points along -axis.
+    let mut around = [(1usize, 1usize), (0, 1), (0, 0), (1, 0)];
+    if !e.lower_inside {
+        around.reverse();
+    }
+    let mut refs = [None; 4];
+    let mut edge_in_cell = [0u8; 4];
+    for (k, &(du, dv)) in around.iter().enumerate() {
+        // (du, dv) = 1 means the cell lies below the edge along that axis.
+        let mut c = g;
+        c[u] -= du;
+        c[v] -= dv;
+        if c[u] >= spec.cells[u] || c[v] >= spec.cells[v] || c[axis] >= spec.cells[axis] {
+            return None;
+        }
+        let r = cells.get(c)?;
+        let mut o = [0usize; 3];
+        o[u] = du;
+        o[v] = dv;
+        edge_in_cell[k] = edge_number(axis, o);
+        refs[k] = Some((c, r));
+    }
+    let refs = refs.map(|r| r.expect("set"));
+    let vertex = |k: usize| {
+        let (_, r) = refs[k];
+        let p = table.patch_of_edge[r.mask as usize][edge_in_cell[k] as usize];
+        debug_assert_ne!(p, NO_PATCH);
+        r.first + p as u32
+    };
+    let position = |k: usize| {
+        let (_, r) = refs[k];
+        let o = &cells.blocks[r.block];
+        let p = table.patch_of_edge[r.mask as usize][edge_in_cell[k] as usize];
+        o.vertices[(o.first[r.local] + p as u32) as usize]
+    };
+    let mut corners = Vec::new();
+    let mut split = false;
+    for k in 0..4 {
+        corners.push(Corner::Vertex(vertex(k)));
+        let l = (k + 1) % 4;
+        let ((ca, ra), (cb, rb)) = (refs[k], refs[l]);
+        let fa = (0..3).find(|&a| ca[a] != cb[a]).expect("neighbours");
+        let (lower, upper, lower_k) = if ca[fa] < cb[fa] {
+            (ra, rb, k)
+        } else {
+            (rb, ra, l)
+        };
+        let bit_hi = 1 << (2 * fa + 1);
+        let bit_lo = 1 << (2 * fa);
+        if table.split_face[lower.mask as usize] & bit_hi != 0
+            && table.split_face[upper.mask as usize] & bit_lo != 0
+        {
+            split = true;
+            let cell = if lower_k == k { ca } else { cb };
+            let segment = face_segment(lower.mask, fa, 1, edge_in_cell[lower_k]);
+            corners.push(Corner::Face(FaceKey {
+                cell,
+                axis: fa as u8,
+                segment,
+            }));
+        }
+    }
+    if split {
+        Some(Err(corners))
+    } else {
+        let p = [0, 1, 2, 3].map(position);
+        let mut other_diagonal = better_by_normal(&p, e.normal);
+        // A folded quad: the diagonal whose midpoint lies nearer the surface keeps the crease
+        // (sharp edges run along diagonals), unless that flips a triangle.
+        let (m0, m1) = (0.5 * (p[0] + p[2]), 0.5 * (p[1] + p[3]));
+        if (m0 - m1).length() > FOLD * spec.cell {
+            let mut value = |m: DVec3| {
+                let mut c = [0, 1, 2].map(|a| ((m[a] - spec.origin[a]) / spec.cell).floor());
+                c[axis] = g[axis] as f64;
+                c[u] = c[u].clamp(g[u] as f64 - 1.0, g[u] as f64);
+                c[v] = c[v].clamp(g[v] as f64 - 1.0, g[v] as f64);
+                let c = c.map(|x| x as usize);
+                let r = cells.get(c).expect("the four cells are surface cells");
+                probe.value(&cells.blocks[r.block], m, scratch).abs()
+            };
+            let (f0, f1) = (value(m0), value(m1));
+            let flips = |t: [[usize; 3]; 2]| {
+                t.iter()
+                    .any(|t| agreement([p[t[0]], p[t[1]], p[t[2]]], e.normal) <= 0.0)
+            };
+            let by_field = f1 < f0;
+            let tris = |d: bool| if d { SECOND } else { FIRST };
+            if !flips(tris(by_field)) {
+                other_diagonal = by_field;
+            }
+        }
+        Some(Ok(Quad {
+            v: [vertex(0), vertex(1), vertex(2), vertex(3)],
+            normal: e.normal,
+            other_diagonal,
+        }))
+    }
+}
+
+/// Position of a split-face vertex: where the surface's tangent lines at the segment's two
+/// crossings meet within the face (a QEF of their planes and the face plane), kept in the face.
+fn face_vertex(k: &FaceKey, cells: &Cells, spec: &GridSpec) -> DVec3 {
+    let r = cells.get(k.cell).expect("split faces lie on surface cells");
+    let b = &cells.blocks[r.block];
+    let axis = k.axis as usize;
+    let l = [0, 1, 2].map(|a| k.cell[a] - b.min[a]);
+    let lo = spec.point(k.cell[0], k.cell[1], k.cell[2]);
+    let mut hi = lo + DVec3::splat(spec.cell);
+    let mut flo = lo;
+    flo[axis] += spec.cell;
+    hi[axis] = flo[axis];
+    let mut q = Qef::new(0.5 * (flo + hi));
+    q.add(
+        flo,
+        DVec3::from_array(std::array::from_fn(|a| f64::from(u8::from(a == axis)))),
+    );
+    for edge in face_edges(axis, 1) {
+        if face_segment(r.mask, axis, 1, edge) != k.segment {
+            continue;
+        }
+        let (ea, o) = edge_origin(edge);
+        let key = local_edge([l[0] + o[0], l[1] + o[1], l[2] + o[2]], ea);
+        let at = b
+            .face_crossings
+            .binary_search_by_key(&key, |c| c.0)
+            .expect("ambiguous-face crossings are kept");
+        let (_, p, n) = b.face_crossings[at];
+        q.add(p, n);
+    }
+    q.solve(flo, hi).0
+}
+
+/// Quads whose diagonal midpoints are further apart than this (in cells) are folded: their
+/// diagonal is chosen on the field.
+const FOLD: f64 = 0.02;
+
+/// The two triangulations of a quad `[a, b, c, d]`: along `a`–`c`, and along `b`–`d`.
+pub(crate) const FIRST: [[usize; 3]; 2] = [[0, 1, 2], [0, 2, 3]];
+pub(crate) const SECOND: [[usize; 3]; 2] = [[0, 1, 3], [1, 2, 3]];
+
+/// How well a triangle agrees with `normal` (cosine of the angle; -1 when degenerate).
+pub(crate) fn agreement(t: [DVec3; 3], normal: DVec3) -> f64 {
+    let n = (t[1] - t[0]).cross(t[2] - t[0]);
+    let len = n.length();
+    if len > 0.0 && len.is_finite() {
+        n.dot(normal) / len
+    } else {
+        -1.0
+    }
+}
+
+/// True when the `b`–`d` diagonal gives triangles agreeing better with `normal` (the worse of
+/// the two triangles decides).
+pub(crate) fn better_by_normal(p: &[DVec3; 4], normal: DVec3) -> bool {
+    let score = |t: [[usize; 3]; 2]| {
+        t.iter()
+            .map(|t| agreement([p[t[0]], p[t[1]], p[t[2]]], normal))
+            .fold(f64::MAX, f64::min)
+    };
+    score(SECOND) > score(FIRST)
+}

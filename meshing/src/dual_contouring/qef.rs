@@ -1,0 +1,224 @@
+//! The quadratic error function of dual contouring: `E(x) = Σ (nᵢ · (x − pᵢ))²` over surface
+//! points `pᵢ` with unit normals `nᵢ`, stored as `AᵀA`, `Aᵀb`, `bᵀb` relative to a reference point
+//! (so sums stay well conditioned), plus the mass point of the `pᵢ`.
+//!
+//! Minimised with a symmetric eigen-decomposition (cyclic Jacobi) of `AᵀA`: eigenvalues below
+//! [`EIGEN_CUTOFF`] times the largest are dropped, so along flat or nearly flat directions the
+//! solution stays at the mass point (rank-revealing pseudo-inverse, the mass point as fallback).
+
+use glam::{DMat3, DVec3};
+
+/// Relative eigenvalue cutoff of the pseudo-inverse.
+pub(crate) const EIGEN_CUTOFF: f64 = 0.02;
+
+/// A QEF about `reference`.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) struct Qef {
+    /// Point the sums are relative to.
+    pub reference: DVec3,
+    /// `AᵀA` as `xx, xy, xz, yy, yz, zz`.
+    pub ata: [f64; 6],
+    /// `Aᵀb`.
+    pub atb: DVec3,
+    /// `bᵀb`.
+    pub btb: f64,
+    /// Sum of the points, relative to the reference.
+    pub mass: DVec3,
+    /// Number of points.
+    pub count: u32,
+}
+
+impl Qef {
+    /// An empty QEF about `reference`.
+    pub fn new(reference: DVec3) -> Self {
+        Self {
+            reference,
+            ata: [0.0; 6],
+            atb: DVec3::ZERO,
+            btb: 0.0,
+            mass: DVec3::ZERO,
+            count: 0,
+        }
+    }
+
+    /// Adds the plane through `p` with unit normal `n`.
+    pub fn add(&mut self, p: DVec3, n: DVec3) {
+        let q = p - self.reference;
+        let d = n.dot(q);
+        let a = &mut self.ata;
+        a[0] += n.x * n.x;
+        a[1] += n.x * n.y;
+        a[2] += n.x * n.z;
+        a[3] += n.y * n.y;
+        a[4] += n.y * n.z;
+        a[5] += n.z * n.z;
+        self.atb += n * d;
+        self.btb += d * d;
+        self.mass += q;
+        self.count += 1;
+    }
+
+    fn matrix(&self) -> DMat3 {
+        let a = &self.ata;
+        DMat3::from_cols(
+            DVec3::new(a[0], a[1], a[2]),
+            DVec3::new(a[1], a[3], a[4]),
+            DVec3::new(a[2], a[4], a[5]),
+        )
+    }
+
+    /// The same QEF about another reference point.
+    pub fn shifted(&self, reference: DVec3) -> Self {
+        let s = self.reference - reference; // q' = q + s
+        let m = self.matrix();
+        let ms = m * s;
+        Self {
+            reference,
+            ata: self.ata,
+            atb: self.atb + ms,
+            btb: self.btb + 2.0 * s.dot(self.atb) + s.dot(ms),
+            mass: self.mass + s * self.count as f64,
+            count: self.count,
+        }
+    }
+
+    /// Adds another QEF (moved to this one's reference).
+    pub fn merge(&mut self, other: &Qef) {
+        let o = other.shifted(self.reference);
+        for (a, b) in self.ata.iter_mut().zip(o.ata) {
+            *a += b;
+        }
+        self.atb += o.atb;
+        self.btb += o.btb;
+        self.mass += o.mass;
+        self.count += o.count;
+    }
+
+    /// `E(x)` at world point `x`.
+    pub fn error(&self, x: DVec3) -> f64 {
+        let q = x - self.reference;
+        (q.dot(self.matrix() * q) - 2.0 * q.dot(self.atb) + self.btb).max(0.0)
+    }
+
+    /// The minimiser (pseudo-inverse about the mass point), clamped into `[lo, hi]`, and its error.
+    pub fn solve(&self, lo: DVec3, hi: DVec3) -> (DVec3, f64) {
+        let c = self.mass / self.count.max(1) as f64;
+        let m = self.matrix();
+        let rhs = self.atb - m * c;
+        let (values, vectors) = symmetric_eigen(m);
+        let top = values.abs().max_element();
+        let mut x = c;
+        if top > 0.0 {
+            for k in 0..3 {
+                if values[k].abs() > EIGEN_CUTOFF * top {
+                    let v = vectors.col(k);
+                    x += v * (v.dot(rhs) / values[k]);
+                }
+            }
+        }
+        let mut p = self.reference + x;
+        if !p.is_finite() {
+            p = self.reference + c;
+        }
+        let p = p.clamp(lo, hi);
+        (p, self.error(p))
+    }
+}
+
+/// Eigenvalues and eigenvectors (columns) of a symmetric 3×3 matrix, by cyclic Jacobi rotations.
+pub(crate) fn symmetric_eigen(m: DMat3) -> (DVec3, DMat3) {
+    let mut a = [
+        [m.x_axis.x, m.y_axis.x, m.z_axis.x],
+        [m.x_axis.y, m.y_axis.y, m.z_axis.y],
+        [m.x_axis.z, m.y_axis.z, m.z_axis.z],
+    ];
+    let mut v = [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]];
+    for _sweep in 0..12 {
+        let off = a[0][1] * a[0][1] + a[0][2] * a[0][2] + a[1][2] * a[1][2];
+        let diag = a[0][0] * a[0][0] + a[1][1] * a[1][1] + a[2][2] * a[2][2];
+        if off <= 1e-30 * diag || off == 0.0 {
+            break;
+        }
+        for (p, q) in [(0, 1), (0, 2), (1, 2)] {
+            if a[p][q] == 0.0 {
+                continue;
+            }
+            let theta = (a[q][q] - a[p][p]) / (2.0 * a[p][q]);
+            let t = theta.signum() / (theta.abs() + (theta * theta + 1.0).sqrt());
+            let t = if theta == 0.0 { 1.0 } else { t };
+            let c = 1.0 / (t * t + 1.0).sqrt();
+            let s = t * c;
+            for row in &mut a {
+                let (akp, akq) = (row[p], row[q]);
+                row[p] = c * akp - s * akq;
+                row[q] = s * akp + c * akq;
+            }
+            let (rp, rq) = (a[p], a[q]);
+            for k in 0..3 {
+                a[p][k] = c * rp[k] - s * rq[k];
+                a[q][k] = s * rp[k] + c * rq[k];
+            }
+            for row in &mut v {
+                let (vp, vq) = (row[p], row[q]);
+                row[p] = c * vp - s * vq;
+                row[q] = s * vp + c * vq;
+            }
+        }
+    }
+    let values = DVec3::new(a[0][0], a[1][1], a[2][2]);
+    let vectors = DMat3::from_cols(
+        DVec3::new(v[0][0], v[1][0], v[2][0]),
+        DVec3::new(v[0][1], v[1][1], v[2][1]),
+        DVec3::new(v[0][2], v[1][2], v[2][2]),
+    );
+    (values, vectors)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn eigen_decomposition_reconstructs_the_matrix() {
+        let m = DMat3::from_cols(
+            DVec3::new(4.0, 1.0, -2.0),
+            DVec3::new(1.0, 3.0, 0.5),
+            DVec3::new(-2.0, 0.5, 1.0),
+        );
+        let (l, v) = symmetric_eigen(m);
+        let back = v * DMat3::from_diagonal(l) * v.transpose();
+        for c in 0..3 {
+            assert!((back.col(c) - m.col(c)).length() < 1e-12);
+        }
+        assert!((v.transpose() * v - DMat3::IDENTITY).col(0).length() < 1e-12);
+    }
+
+    /// Three planes through a corner give the corner exactly; two give a point on their line
+    /// nearest the mass point; one gives the mass point projected onto the plane.
+    #[test]
+    fn corners_edges_and_planes() {
+        let corner = DVec3::new(0.3, -0.2, 0.7);
+        let r = glam::DQuat::from_axis_angle(DVec3::new(1.0, 2.0, 3.0).normalize(), 0.7);
+        let axes = [r * DVec3::X, r * DVec3::Y, r * DVec3::Z];
+        let mut q = Qef::new(DVec3::ZERO);
+        for (k, n) in axes.iter().enumerate() {
+            let t = axes[(k + 1) % 3] * 0.1 + axes[(k + 2) % 3] * 0.05;
+            q.add(corner + t, *n);
+        }
+        let (x, e) = q.solve(DVec3::splat(-10.0), DVec3::splat(10.0));
+        assert!((x - corner).length() < 1e-12 && e < 1e-20);
+        // Shifting and merging keep the function.
+        let s = q.shifted(DVec3::new(5.0, 1.0, -3.0));
+        let probe = DVec3::new(0.1, 0.2, 0.3);
+        assert!((s.error(probe) - q.error(probe)).abs() < 1e-9);
+        let mut m = Qef::new(DVec3::ONE);
+        m.merge(&q);
+        m.merge(&q);
+        assert!((m.error(probe) - 2.0 * q.error(probe)).abs() < 1e-9);
+        let mut flat = Qef::new(DVec3::ZERO);
+        flat.add(DVec3::new(0.0, 0.0, 0.5), DVec3::Z);
+        flat.add(DVec3::new(1.0, 0.0, 0.5), DVec3::Z);
+        let (x, _) = flat.solve(DVec3::splat(-1.0), DVec3::splat(2.0));
+        assert!((x - DVec3::new(0.5, 0.0, 0.5)).length() < 1e-12);
+    }
+}

@@ -1,0 +1,188 @@
+//! Where blocks come from: the sparse octree's leaf bricks (sampled with their pruned programs,
+//! searched with the same programs), or tiles of a dense [`SampleGrid`] with any [`DcField`].
+//! Also the sign lookup of any grid sample that adaptive simplification needs.
+
+use super::block::{Block, BlockScratch, build};
+use super::crossing::DcField;
+use crate::marching_cubes::{GridSpec, SampleGrid, inside};
+use crate::octree::{Cancelled, MeshStats, Progress, SparseOptions};
+use rayon::prelude::*;
+use solidkit_kernel::Program;
+use solidkit_kernel::program::BatchScratch;
+use std::collections::HashMap;
+use std::sync::atomic::{AtomicUsize, Ordering};
+
+/// Blocks of the sparse octree's surface bricks, sorted by block coordinates (z, y, x).
+pub(crate) fn sparse_blocks(
+    program: &Program,
+    spec: &GridSpec,
+    opts: &SparseOptions,
+    keep: bool,
+    stats: &mut MeshStats,
+) -> Result<Vec<Block>, Cancelled> {
+    let t0 = std::time::Instant::now();
+    let leaves = crate::octree::surface_nodes(program, spec, opts, stats)?;
+    stats.octree_s = t0.elapsed().as_secs_f64();
+    stats.surface_bricks = leaves.len();
+    let brick = opts.brick_size();
+    let done = AtomicUsize::new(0);
+    let total = leaves.len();
+    let t1 = std::time::Instant::now();
+    let mut blocks: Vec<Block> = leaves
+        .par_iter()
+        .map_init(
+            || (BlockScratch::default(), BatchScratch::default(), Vec::new()),
+            |(scratch, batch, values), leaf| {
+                if opts.is_cancelled() {
+                    return Block::default();
+                }
+                let e = leaf.extent(spec);
+                let n = [e[0] + 1, e[1] + 1, e[2] + 1];
+                let (mut x, mut y, mut z) = (Vec::new(), Vec::new(), Vec::new());
+                for k in 0..n[2] {
+                    let zk = spec.coordinate(2, leaf.min[2] + k);
+                    for j in 0..n[1] {
+                        let yj = spec.coordinate(1, leaf.min[1] + j);
+                        x.extend((0..n[0]).map(|i| spec.coordinate(0, leaf.min[0] + i)));
+                        y.extend(std::iter::repeat_n(yj, n[0]));
+                        z.extend(std::iter::repeat_n(zk, n[0]));
+                    }
+                }
+                values.clear();
+                values.resize(x.len(), 0.0f32);
+                let start = std::time::Instant::now();
+                leaf.program.eval_many(&x, &y, &z, values, batch);
+                let sampling = start.elapsed().as_secs_f64();
+                let mut b = build(
+                    leaf.program.as_ref(),
+                    spec,
+                    leaf.min,
+                    e,
+                    brick,
+                    values,
+                    keep,
+                    scratch,
+                );
+                b.evaluation_s += sampling;
+                b.program = Some(leaf.program.clone());
+                let d = done.fetch_add(1, Ordering::Relaxed) + 1;
+                opts.report(Progress {
+                    stage: "bricks",
+                    done: d,
+                    total,
+                });
+                b
+            },
+        )
+        .collect();
+    if opts.is_cancelled() {
+        return Err(Cancelled);
+    }
+    stats.bricks_s = t1.elapsed().as_secs_f64();
+    stats.samples_evaluated = blocks.iter().map(|b| b.samples).sum();
+    stats.evaluation_cpu_s = blocks.iter().map(|b| b.evaluation_s).sum();
+    blocks.sort_unstable_by_key(|b| (b.coord[2], b.coord[1], b.coord[0]));
+    Ok(blocks)
+}
+
+/// Blocks of `block`³ cells tiling a dense sample grid, searched with `field`.
+pub(crate) fn dense_blocks<F: DcField>(
+    field: &F,
+    samples: &SampleGrid,
+    block: usize,
+    keep: bool,
+) -> Vec<Block> {
+    let spec = &samples.spec;
+    let dims = spec.cells.map(|c| c.div_ceil(block).max(1));
+    let coords: Vec<[usize; 3]> = (0..dims[2])
+        .flat_map(|z| (0..dims[1]).flat_map(move |y| (0..dims[0]).map(move |x| [x, y, z])))
+        .collect();
+    coords
+        .par_iter()
+        .map_init(BlockScratch::default, |scratch, c| {
+            let min = c.map(|x| x * block);
+            let e = [0, 1, 2].map(|a| block.min(spec.cells[a] - min[a]));
+            let mut values = Vec::with_capacity((e[0] + 1) * (e[1] + 1) * (e[2] + 1));
+            for k in 0..=e[2] {
+                for j in 0..=e[1] {
+                    for i in 0..=e[0] {
+                        values.push(samples.at(min[0] + i, min[1] + j, min[2] + k));
+                    }
+                }
+            }
+            build(field, spec, min, e, block, &values, keep, scratch)
+        })
+        .filter(|b| !b.vertices.is_empty() || !b.edges.is_empty())
+        .collect()
+}
+
+/// The inside test of any grid sample.
+pub(crate) trait Signs {
+    /// True when sample `s` (global indices) is inside.
+    fn inside(&mut self, s: [usize; 3]) -> bool;
+}
+
+/// Signs of a dense grid.
+impl Signs for &SampleGrid {
+    fn inside(&mut self, s: [usize; 3]) -> bool {
+        inside(self.at(s[0], s[1], s[2]))
+    }
+}
+
+/// Signs of the sparse path: the samples of a block containing the sample, else (the sample lies
+/// in a box the octree culled, whose samples all share one sign) the full program's f32 value.
+pub(crate) struct SparseSigns<'a> {
+    pub blocks: &'a [Block],
+    pub index: &'a super::contour::BlockIndex,
+    pub block_size: usize,
+    pub program: &'a Program,
+    pub spec: GridSpec,
+    pub cache: HashMap<[usize; 3], bool>,
+    pub batch: BatchScratch,
+}
+
+impl Signs for SparseSigns<'_> {
+    fn inside(&mut self, s: [usize; 3]) -> bool {
+        let bs = self.block_size;
+        for mask in 0..8 {
+            let mut c = [0usize; 3];
+            let mut ok = true;
+            for a in 0..3 {
+                let mut b = s[a] / bs;
+                if mask >> a & 1 == 1 {
+                    if !s[a].is_multiple_of(bs) || b == 0 {
+                        ok = false;
+                        break;
+                    }
+                    b -= 1;
+                }
+                c[a] = b;
+            }
+            if !ok {
+                continue;
+            }
+            if let Some(b) = self.index.get(c) {
+                let o = &self.blocks[b];
+                let l = [0, 1, 2].map(|a| s[a].wrapping_sub(o.min[a]));
+                if (0..3).all(|a| l[a] <= o.extent[a]) {
+                    let n = [o.extent[0] + 1, o.extent[1] + 1];
+                    return o.inside[l[0] + n[0] * (l[1] + n[1] * l[2])] == 1;
+                }
+            }
+        }
+        if let Some(&v) = self.cache.get(&s) {
+            return v;
+        }
+        let mut out = [0.0f32];
+        self.program.eval_many(
+            &[self.spec.coordinate(0, s[0])],
+            &[self.spec.coordinate(1, s[1])],
+            &[self.spec.coordinate(2, s[2])],
+            &mut out,
+            &mut self.batch,
+        );
+        let v = inside(out[0]);
+        self.cache.insert(s, v);
+        v
+    }
+}
