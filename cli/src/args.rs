@@ -24,6 +24,9 @@ pub enum Command {
     Check(CheckArgs),
     /// Write the JSON tree of any input (.json, .rhai, .csg).
     Convert(ConvertArgs),
+    /// Write a suite of test solids with exact ground truth (one mesh per solid and
+    /// manifest.json); exit 1 if a solid fails its own check.
+    Gen(crate::commands::GenArgs),
     /// Compare two meshes: key measures of each and their symmetric Hausdorff distance.
     Compare(CompareArgs),
     /// Benchmark meshing of the standard models and print a table (time, rate, peak memory and
@@ -98,7 +101,7 @@ pub enum Method {
 pub struct MeshArgs {
     /// The solid: a JSON tree (.json) or a Rhai script (.rhai).
     pub input: PathBuf,
-    /// Write the mesh here; the format follows the extension (.stl .obj .ply .off).
+    /// Write the mesh here; the format follows the extension (.stl .obj .ply .off .3mf .glb).
     #[arg(short, long)]
     pub output: Option<PathBuf>,
     /// Cells along the longest side of the meshing bounds.

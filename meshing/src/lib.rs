@@ -14,6 +14,7 @@ pub mod measure;
 pub mod octree;
 pub mod sink;
 pub mod subdivision;
+pub mod suites;
 pub mod topology;
 
 pub use halfedge::HalfEdgeMesh;

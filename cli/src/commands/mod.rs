@@ -4,11 +4,13 @@ mod bench;
 mod check;
 mod compare;
 mod convert;
+mod r#gen;
 mod mesh;
 mod subdivide;
 
 use crate::args::Command;
 use anyhow::Result;
+pub use r#gen::GenArgs;
 
 /// Runs a subcommand; returns the process exit code.
 pub fn run(command: Command) -> Result<u8> {
@@ -16,6 +18,7 @@ pub fn run(command: Command) -> Result<u8> {
         Command::Mesh(a) => mesh::run(&a),
         Command::Check(a) => check::run(&a),
         Command::Convert(a) => convert::run(&a),
+        Command::Gen(a) => r#gen::run(&a),
         Command::Compare(a) => compare::run(&a),
         Command::Bench(a) => bench::run(&a),
         Command::BenchCase(a) => bench::run_case(&a),

@@ -4,7 +4,7 @@
 //! - `gyroid-sphere` ([`gyroid_sphere`]), over `[-1, 1]³`: the zero set of
 //!   `max(‖P‖ − 25, abs(g(P)) − 0.2)` with `P = 30 p`.
 //! - `menger-L` ([`menger`]), over `[-0.5, 0.5]³` padded by [`MENGER_PAD`]: volume `(20/27)^L`,
-//!   genus [`menger_genus`].
+//!   genus [`menger_genus`]; [`menger_mesh`] is the same solid as an exact polyhedral mesh.
 //! - `many-N` ([`many`]), over `[-1, 1]³`: `N` primitives, `2N + 2` nodes.
 //!
 //! [`Model::by_name`] turns these names into a [`Model`]: the solid, the box the benchmarks mesh it
@@ -15,6 +15,7 @@
 mod gyroid_sphere;
 mod many;
 mod menger;
+mod menger_mesh;
 mod rng;
 mod sphere;
 pub mod workload;
@@ -22,6 +23,9 @@ pub mod workload;
 pub use gyroid_sphere::{GYROID_SCALE, GYROID_SPHERE_RADIUS, GYROID_THICKNESS, gyroid_sphere};
 pub use many::{MANY_DEFAULT_SEED, many};
 pub use menger::{MENGER_PAD, menger, menger_bar_count, menger_genus, menger_volume};
+pub use menger_mesh::{
+    menger_area, menger_keeps, menger_mesh, menger_mesh_counts, menger_square_count, menger_voxels,
+};
 pub use rng::SplitMix64;
 pub use sphere::{SPHERE_RADIUS, sphere_bench};
 

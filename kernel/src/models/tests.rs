@@ -189,3 +189,63 @@ fn workloads_are_inside_their_domain() {
         assert!(d.contains(b.min) && d.contains(b.max) && !b.is_empty());
     }
 }
+
+/// Every directed edge used once and its opposite present: closed and consistently oriented.
+fn closed_oriented(m: &crate::IndexedMesh) -> bool {
+    let mut directed: Vec<(u32, u32)> = m
+        .triangles
+        .iter()
+        .flat_map(|t| [(t[0], t[1]), (t[1], t[2]), (t[2], t[0])])
+        .collect();
+    directed.sort_unstable();
+    let unique = directed.windows(2).all(|w| w[0] != w[1]);
+    unique
+        && directed
+            .iter()
+            .all(|&(a, b)| directed.binary_search(&(b, a)).is_ok())
+}
+
+#[test]
+fn menger_mesh_matches_its_closed_forms() {
+    for level in 0..=3 {
+        let m = menger_mesh(level).expect("small grid");
+        assert!(closed_oriented(&m), "level {level}");
+        let (v, e, f) = menger_mesh_counts(level);
+        let edges = 3 * m.triangles.len() / 2;
+        assert_eq!(
+            (
+                m.positions.len() as u64,
+                edges as u64,
+                m.triangles.len() as u64
+            ),
+            (v, e, f),
+            "level {level}"
+        );
+        let (mut volume, mut area) = (0.0, 0.0);
+        for t in 0..m.triangle_count() {
+            let [a, b, c] = m.triangle_positions(t);
+            volume += a.dot(b.cross(c)) / 6.0;
+            area += (b - a).cross(c - a).length() / 2.0;
+        }
+        assert!((volume - menger_volume(level)).abs() < 1e-12, "{volume}");
+        assert!((area - menger_area(level)).abs() < 1e-11, "{area}");
+        let kept = menger_voxels(level).expect("grid").filled_count();
+        assert_eq!(kept, 20usize.pow(level));
+    }
+    assert_eq!(menger_square_count(1), 72);
+    assert_eq!(menger_mesh_counts(4), (283_520, 1_009_152, 672_768));
+}
+
+#[test]
+fn menger_keeps_agrees_with_the_tree() {
+    let p = menger(2).compile();
+    for x in 0..9 {
+        for y in 0..9 {
+            for z in 0..9 {
+                let c =
+                    DVec3::new(x as f64, y as f64, z as f64) / 9.0 - DVec3::splat(0.5 - 1.0 / 18.0);
+                assert_eq!(p.value(c) < 0.0, menger_keeps(2, x, y, z), "{x} {y} {z}");
+            }
+        }
+    }
+}

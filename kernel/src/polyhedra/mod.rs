@@ -7,21 +7,26 @@
 //! out right. These are exact tessellations; to use a polyhedron in a CSG tree see
 //! [`Solid::platonic`](crate::Solid::platonic) (an exact field from face planes) and
 //! [`Solid::from_polyhedron`](crate::Solid::from_polyhedron) (any polyhedron through its triangle
-//! mesh).
+//! mesh). [`VoxelGrid`] gives the exact boundary of a union of grid cubes (Menger sponges), and
+//! [`PlatonicKind::unit_measures`] the Platonic solids' closed forms.
 
 mod dual;
 mod error;
 mod hull;
+mod measures;
 mod platonic;
 mod polyhedron;
 mod prism;
+mod voxels;
 
 #[cfg(test)]
 mod tests;
 
 pub use crate::triangulate::TriangulationError;
 pub use error::PolyhedronError;
+pub use measures::PlatonicMeasures;
 pub(crate) use platonic::unit as unit_platonic;
 pub use platonic::{PlatonicKind, PlatonicSize};
 pub use polyhedron::Polyhedron;
 pub use prism::Prism;
+pub use voxels::{VoxelError, VoxelGrid};

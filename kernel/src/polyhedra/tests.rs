@@ -284,3 +284,49 @@ fn non_manifold_vertex_is_reported() {
         Err(PolyhedronError::NonManifoldVertex { vertex: 0 })
     );
 }
+
+#[test]
+fn closed_forms_match_the_built_solids() {
+    for kind in PlatonicKind::ALL {
+        let m = kind.unit_measures();
+        let p = platonic(kind, PlatonicSize::Edge(2.0));
+        assert_eq!(
+            [p.vertex_count(), p.edge_count(), p.face_count()],
+            m.counts,
+            "{kind:?}"
+        );
+        assert!(
+            (p.volume() - 8.0 * m.volume).abs() < 1e-12 * m.volume,
+            "{kind:?}"
+        );
+        assert!(
+            (m.volume - volume_for_edge(kind, 1.0)).abs() < 1e-15,
+            "{kind:?}"
+        );
+        let r = p.vertices().iter().map(|v| v.length()).fold(0.0, f64::max);
+        assert!((r - 2.0 * m.circumradius).abs() < 1e-12, "{kind:?}");
+        assert!(p.faces().iter().all(|f| f.len() == m.face_sides));
+        let area: f64 = p
+            .triangles()
+            .iter()
+            .map(|t| {
+                let [a, b, c] = t.map(|i| p.vertices()[i as usize]);
+                (b - a).cross(c - a).length() / 2.0
+            })
+            .sum();
+        assert!((area - 4.0 * m.area).abs() < 1e-12 * m.area, "{kind:?}");
+        // Volume = area · inradius / 3 (pyramids on the faces).
+        assert!(
+            (m.volume - m.area * m.inradius / 3.0).abs() < 1e-14,
+            "{kind:?}"
+        );
+        let dual = p.dual().unwrap();
+        let v = dual.vertices();
+        let f = &dual.faces()[0];
+        let edge = v[f[0] as usize].distance(v[f[1] as usize]);
+        assert!(
+            (edge - kind.dual_edge(2.0)).abs() < 1e-12,
+            "{kind:?} dual edge {edge}"
+        );
+    }
+}

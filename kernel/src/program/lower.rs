@@ -98,16 +98,21 @@ impl Lowerer {
     fn combine(&mut self, kind: &NodeKind, frame: u32, children: &[(u32, Aabb)]) -> u32 {
         let c: Vec<u32> = children.iter().map(|x| x.0).collect();
         let c = c.as_slice();
+        // The children's values are in world units: the node's own lengths (blend radius,
+        // offset distance, shell thickness) are in its frame's units and scale by the frame's
+        // distance factor σ, like the leaves' values (the smooth minimum is 1-homogeneous:
+        // smin(σa, σb, σr) = σ·smin(a, b, r)), so the zero set is the node's, transformed.
+        let sigma = self.frames[frame as usize].sigma;
         match kind {
             NodeKind::Primitive(p) => self.leaf(p, frame),
             NodeKind::SmoothUnion { radius } => {
-                let r = super::Bits::of(*radius);
+                let r = super::Bits::of(*radius * sigma);
                 self.fold(c, |a, b| Instr::SmoothMin(a, b, r), Infinity::Positive)
             }
             // smooth max(a, b) = −smooth min(−a, −b).
             NodeKind::SmoothIntersection { radius } => {
                 let negated: Vec<u32> = c.iter().map(|&x| self.emit(Instr::Neg(x))).collect();
-                let r = super::Bits::of(*radius);
+                let r = super::Bits::of(*radius * sigma);
                 let m = self.fold(
                     &negated,
                     |a, b| Instr::SmoothMin(a, b, r),
@@ -120,7 +125,7 @@ impl Lowerer {
                 let Some((&first, rest)) = c.split_first() else {
                     return self.emit(Instr::Const(Infinity::Positive));
                 };
-                let r = super::Bits::of(*radius);
+                let r = super::Bits::of(*radius * sigma);
                 let start = self.emit(Instr::Neg(first));
                 let m = rest
                     .iter()
@@ -129,12 +134,15 @@ impl Lowerer {
             }
             NodeKind::Offset { distance } => {
                 let child = self.fold(c, Instr::Min, Infinity::Positive);
-                self.emit(Instr::AddConst(child, super::Bits::of(-distance)))
+                self.emit(Instr::AddConst(child, super::Bits::of(-distance * sigma)))
             }
             NodeKind::Shell { thickness } => {
                 let child = self.fold(c, Instr::Min, Infinity::Positive);
                 let a = self.emit(Instr::Abs(child));
-                self.emit(Instr::AddConst(a, super::Bits::of(-0.5 * thickness)))
+                self.emit(Instr::AddConst(
+                    a,
+                    super::Bits::of(-0.5 * thickness * sigma),
+                ))
             }
             NodeKind::Transform(_) => self.fold(c, Instr::Min, Infinity::Positive),
             NodeKind::Union => self.balanced(children, Instr::Min, Infinity::Positive),

@@ -61,6 +61,58 @@ fn rigid_transforms_keep_exact_distances() {
 }
 
 #[test]
+fn lengths_of_blends_offsets_and_shells_scale_with_their_frame() {
+    // A transformed node is the node's solid transformed: its blend radius, offset distance and
+    // shell thickness are lengths in its own frame.
+    let a = Solid::sphere(0.4).translate(DVec3::new(-0.35, 0.0, 0.0));
+    let b = Solid::cube(0.6).translate(DVec3::new(0.35, 0.1, 0.0));
+    let nodes = [
+        a.smooth_union(&b, 0.3),
+        Solid::smooth_intersection_all([a.clone(), b.clone()], 0.25),
+        Solid::smooth_difference_all(a.clone(), [b.clone()], 0.2),
+        a.offset(0.2),
+        a.offset(-0.1),
+        b.shell(0.08),
+    ];
+    let mut rng = Rng::new(17);
+    for node in &nodes {
+        let local = node.compile();
+        for (factor, turn) in [(0.5, 0.0), (3.0, 40.0), (1.7, -75.0)] {
+            let moved = node
+                .rotate(DVec3::new(1.0, 2.0, -0.5), turn)
+                .scale(DVec3::splat(factor))
+                .translate(DVec3::new(0.3, -1.0, 2.0))
+                .compile();
+            for _ in 0..200 {
+                let q = rng.vec(1.2);
+                let p = DVec3::new(1.0, 2.0, -0.5).normalize().pipe_rotate(turn, q) * factor
+                    + DVec3::new(0.3, -1.0, 2.0);
+                let (want, got) = (factor * local.value(q), moved.value(p));
+                assert!(
+                    (want - got).abs() < 1e-9 * (1.0 + want.abs()),
+                    "{}: {got} vs {want} at scale {factor}",
+                    node.kind().name()
+                );
+            }
+        }
+    }
+    // The case the cross-check found: half of a sphere of radius 1 offset by 0.2 has radius 0.6.
+    let s = Solid::sphere(1.0).offset(0.2).scale(DVec3::splat(0.5));
+    assert!(s.value(DVec3::new(0.6, 0.0, 0.0)).abs() < 1e-12);
+}
+
+/// Rotation of `q` by `degrees` about the unit axis `self`.
+trait PipeRotate {
+    fn pipe_rotate(self, degrees: f64, q: DVec3) -> DVec3;
+}
+
+impl PipeRotate for DVec3 {
+    fn pipe_rotate(self, degrees: f64, q: DVec3) -> DVec3 {
+        glam::DQuat::from_axis_angle(self, degrees.to_radians()) * q
+    }
+}
+
+#[test]
 fn non_uniform_scale_is_a_conservative_distance_bound() {
     // An ellipsoid with semi-axes (2, 1, 0.5) built from a unit sphere.
     let e = Solid::sphere(1.0)

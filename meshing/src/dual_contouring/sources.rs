@@ -4,7 +4,7 @@
 
 use super::block::{Block, BlockScratch, build};
 use super::crossing::DcField;
-use crate::marching_cubes::{GridSpec, SampleGrid, inside};
+use crate::marching_cubes::{GridSpec, SampleGrid, inside, snap_noise};
 use crate::octree::{Cancelled, MeshStats, Progress, SparseOptions};
 use rayon::prelude::*;
 use solidkit_kernel::Program;
@@ -52,6 +52,9 @@ pub(crate) fn sparse_blocks(
                 values.resize(x.len(), 0.0f32);
                 let start = std::time::Instant::now();
                 leaf.program.eval_many(&x, &y, &z, values, batch);
+                for (i, v) in values.iter_mut().enumerate() {
+                    *v = snap_noise(x[i], y[i], z[i], *v);
+                }
                 let sampling = start.elapsed().as_secs_f64();
                 let mut b = build(
                     leaf.program.as_ref(),
@@ -174,14 +177,10 @@ impl Signs for SparseSigns<'_> {
             return v;
         }
         let mut out = [0.0f32];
-        self.program.eval_many(
-            &[self.spec.coordinate(0, s[0])],
-            &[self.spec.coordinate(1, s[1])],
-            &[self.spec.coordinate(2, s[2])],
-            &mut out,
-            &mut self.batch,
-        );
-        let v = inside(out[0]);
+        let p = [0, 1, 2].map(|a| self.spec.coordinate(a, s[a]));
+        self.program
+            .eval_many(&[p[0]], &[p[1]], &[p[2]], &mut out, &mut self.batch);
+        let v = inside(snap_noise(p[0], p[1], p[2], out[0]));
         self.cache.insert(s, v);
         v
     }

@@ -55,7 +55,10 @@ pub enum MeshIoError {
         message: String,
     },
     /// The file extension names no supported mesh format.
-    #[error("{}: unsupported mesh format (expected .stl, .obj, .ply or .off)", .path.display())]
+    #[error(
+        "{}: unsupported mesh format (expected .stl, .obj, .ply or .off; .3mf or .glb for output)",
+        .path.display()
+    )]
     UnsupportedFormat {
         /// The file concerned.
         path: PathBuf,

@@ -1,7 +1,8 @@
 //! Mesh file input and output: STL (binary and ASCII), Wavefront OBJ, PLY (ASCII and binary)
-//! and OFF, to and from [`IndexedMesh`].
+//! and OFF, to and from [`IndexedMesh`]; 3MF and glTF binary (`.glb`) output only.
 //!
-//! The format follows the file extension (`.stl`, `.obj`, `.ply`, `.off`, any case). Readers
+//! The format follows the file extension (`.stl`, `.obj`, `.ply`, `.off`, `.3mf`, `.glb`, any
+//! case). Readers
 //! never panic, whatever the bytes: every problem is a [`MeshIoError`] whose message is one line
 //! naming the file, the line or byte offset and the problem. Coordinates must be finite and
 //! every face index in range. Polygonal faces are triangulated by [`triangulate_polygon`]
@@ -18,6 +19,7 @@ mod atomic;
 mod bytes;
 mod error;
 mod faces;
+mod glb;
 mod obj;
 mod obj_scan;
 mod off;
@@ -27,8 +29,11 @@ mod polygon;
 mod polygon_mesh;
 mod resolver;
 mod stl;
+mod stored;
 mod text;
+mod threemf;
 mod weld;
+mod zip;
 
 #[cfg(test)]
 mod polygon_mesh_tests;
@@ -48,6 +53,9 @@ pub use polygon_mesh::{
     write_polygon_mesh_with,
 };
 pub use resolver::FileMeshResolver;
+pub use stored::{encode_mesh, stored_mesh};
+pub use threemf::MODEL_PATH as THREEMF_MODEL_PATH;
+pub use zip::crc32;
 
 /// A mesh file format.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
@@ -60,6 +68,10 @@ pub enum MeshFormat {
     Ply,
     /// Object File Format (OFF).
     Off,
+    /// 3D Manufacturing Format (zip package with the model XML); written, not read.
+    ThreeMf,
+    /// glTF 2.0 binary (32-bit float positions, 32-bit indices); written, not read.
+    Glb,
 }
 
 impl MeshFormat {
@@ -81,6 +93,8 @@ impl MeshFormat {
             "obj" => Some(MeshFormat::Obj),
             "ply" => Some(MeshFormat::Ply),
             "off" => Some(MeshFormat::Off),
+            "3mf" => Some(MeshFormat::ThreeMf),
+            "glb" => Some(MeshFormat::Glb),
             _ => None,
         }
     }
@@ -92,6 +106,8 @@ impl MeshFormat {
             MeshFormat::Obj => "obj",
             MeshFormat::Ply => "ply",
             MeshFormat::Off => "off",
+            MeshFormat::ThreeMf => "3mf",
+            MeshFormat::Glb => "glb",
         }
     }
 }
@@ -137,6 +153,13 @@ pub fn read_mesh_bytes(
         MeshFormat::Obj => obj::read(bytes, name),
         MeshFormat::Ply => ply::read(bytes, name),
         MeshFormat::Off => off::read(bytes, name),
+        MeshFormat::ThreeMf | MeshFormat::Glb => Err(MeshIoError::invalid(
+            name,
+            format!(
+                "reading .{} is not supported (solidkit writes it; read .stl, .obj, .ply or .off)",
+                format.extension()
+            ),
+        )),
     }
 }
 
@@ -179,6 +202,8 @@ fn encode(
         MeshFormat::Obj => obj::write(out, mesh),
         MeshFormat::Ply => ply::write(out, mesh, encoding),
         MeshFormat::Off => off::write(out, mesh),
+        MeshFormat::ThreeMf => threemf::write(out, mesh),
+        MeshFormat::Glb => glb::write(out, mesh),
     }
 }
 
@@ -200,6 +225,18 @@ fn check_writable(mesh: &IndexedMesh, format: MeshFormat) -> Result<(), String> 
     }
     match format {
         MeshFormat::Stl => stl::check_writable(mesh),
-        MeshFormat::Obj | MeshFormat::Ply | MeshFormat::Off => Ok(()),
+        MeshFormat::Glb => glb::check_writable(mesh),
+        MeshFormat::Obj | MeshFormat::Ply | MeshFormat::Off | MeshFormat::ThreeMf => Ok(()),
     }
+}
+
+/// `mesh` with its positions rounded to `f32`, as a GLB file stores them.
+fn glb_rounded(mesh: &IndexedMesh) -> IndexedMesh {
+    IndexedMesh::new(
+        mesh.positions
+            .iter()
+            .map(|p| p.as_vec3().as_dvec3())
+            .collect(),
+        mesh.triangles.clone(),
+    )
 }

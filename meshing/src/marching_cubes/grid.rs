@@ -1,5 +1,6 @@
 //! Uniform sampling grids: where the samples are ([`GridSpec`]) and their values ([`SampleGrid`]).
 
+use super::snap_noise;
 use glam::DVec3;
 use rayon::prelude::*;
 use solidkit_kernel::program::BatchScratch;
@@ -153,8 +154,9 @@ impl SampleGrid {
                         *p = spec.point(i, j, k);
                     }
                     field.values(&row, &mut row_values);
-                    for (o, v) in out.iter_mut().zip(&row_values) {
-                        *o = *v as f32;
+                    for (i, (o, v)) in out.iter_mut().zip(&row_values).enumerate() {
+                        let [x, y, z] = [0, 1, 2].map(|a| spec.coordinate(a, [i, j, k][a]));
+                        *o = snap_noise(x, y, z, *v as f32);
                     }
                 }
             });
@@ -177,6 +179,9 @@ impl SampleGrid {
                 for (j, out) in slice.chunks_mut(sx).enumerate() {
                     y.fill(spec.coordinate(1, j));
                     program.eval_many(&x, &y, &z, out, &mut scratch);
+                    for (i, v) in out.iter_mut().enumerate() {
+                        *v = snap_noise(x[i], y[i], z[i], *v);
+                    }
                 }
             });
         Self { spec, values }

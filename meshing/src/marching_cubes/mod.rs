@@ -10,7 +10,7 @@ pub mod polygonize;
 pub mod table;
 
 pub use grid::{GridError, GridSpec, SampleGrid};
-pub use polygonize::{EDGE_MARGIN, edge_vertex, inside, polygonize_into};
+pub use polygonize::{EDGE_MARGIN, NOISE, edge_vertex, inside, polygonize_into, snap_noise};
 
 use crate::IndexedMesh;
 use solidkit_kernel::Field;

@@ -210,3 +210,15 @@ fn grid_covers_bounds_with_one_cell_of_padding() {
     assert!(GridSpec::for_bounds(&solidkit_kernel::Aabb::infinite(), 10).is_err());
     assert!(GridSpec::for_bounds(&b, 0).is_err());
 }
+
+#[test]
+fn noise_band_snaps_to_zero_and_scales_with_the_coordinates() {
+    use super::{NOISE, snap_noise};
+    // A polytope vertex evaluated at its f32-rounded position: a sign by chance, now zero.
+    assert_eq!(snap_noise(0.57735, 0.57735, 0.57735, -1e-8), 0.0);
+    assert_eq!(snap_noise(0.0, 0.0, 0.0, NOISE * 0.5), 0.0);
+    // Real values keep their sign, and the band grows with the coordinates' magnitude.
+    assert_eq!(snap_noise(0.0, 0.0, 0.0, -2.0 * NOISE), -2.0 * NOISE);
+    assert_eq!(snap_noise(0.0, -100.0, 0.0, -50.0 * NOISE), 0.0);
+    assert_eq!(snap_noise(0.0, -100.0, 0.0, -1e-3), -1e-3);
+}

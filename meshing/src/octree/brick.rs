@@ -9,7 +9,7 @@
 
 use super::subdivide::Node;
 use crate::marching_cubes::table::{case_table, edge_origin};
-use crate::marching_cubes::{GridSpec, edge_vertex, inside};
+use crate::marching_cubes::{GridSpec, edge_vertex, inside, snap_noise};
 use glam::Vec3;
 use solidkit_kernel::program::BatchScratch;
 
@@ -99,6 +99,9 @@ fn sample(node: &Node, spec: &GridSpec, n: [usize; 3], s: &mut BrickScratch) {
     node.program
         .eval_many(&s.x, &s.y, &s.z, &mut s.values, &mut s.batch);
     s.evaluation_s = start.elapsed().as_secs_f64();
+    for (i, v) in s.values.iter_mut().enumerate() {
+        *v = snap_noise(s.x[i], s.y[i], s.z[i], *v);
+    }
     s.inside.clear();
     s.inside
         .extend(s.values.iter().map(|&v| u8::from(inside(v))));

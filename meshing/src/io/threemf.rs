@@ -1,0 +1,117 @@
+//! 3MF output (3D Manufacturing Format, core specification 1.3): a zip package (see
+//! [`zip`](super::zip): stored entries, fixed timestamps) holding `[Content_Types].xml`,
+//! `_rels/.rels` and the model part `3D/3dmodel.model`.
+//!
+//! Choices: the whole mesh is **one object** (`id="1"`, `type="model"`) with every shell in it (3MF
+//! allows several shells in one mesh; the build has one item), `unit="millimeter"` (one solidkit
+//! unit is written as one millimetre; solidkit itself is unitless), and coordinates written as the
+//! shortest decimal that reads back to the same `f64`, so the model is exact. Vertex and triangle
+//! order are those of the [`IndexedMesh`].
+
+use std::io::{self, Write};
+
+use super::zip::{ZipEntry, write_stored};
+use crate::IndexedMesh;
+
+/// Path of the model part inside the package.
+pub const MODEL_PATH: &str = "3D/3dmodel.model";
+
+const CONTENT_TYPES: &str = r#"<?xml version="1.0" encoding="UTF-8"?>
+<Types xmlns="http://schemas.openxmlformats.org/package/2006/content-types">
+ <Default Extension="rels" ContentType="application/vnd.openxmlformats-package.relationships+xml"/>
+ <Default Extension="model" ContentType="application/vnd.ms-package.3dmanufacturing-3dmodel+xml"/>
+</Types>
+"#;
+
+const RELATIONSHIPS: &str = r#"<?xml version="1.0" encoding="UTF-8"?>
+<Relationships xmlns="http://schemas.openxmlformats.org/package/2006/relationships">
+ <Relationship Target="/3D/3dmodel.model" Id="rel0" Type="http://schemas.microsoft.com/3dmanufacturing/2013/01/3dmodel"/>
+</Relationships>
+"#;
+
+/// The model part's XML.
+fn model_xml(mesh: &IndexedMesh) -> io::Result<Vec<u8>> {
+    let mut x = Vec::with_capacity(64 * mesh.positions.len() + 48 * mesh.triangles.len() + 512);
+    x.write_all(
+        br#"<?xml version="1.0" encoding="UTF-8"?>
+<model unit="millimeter" xml:lang="en-US" xmlns="http://schemas.microsoft.com/3dmanufacturing/core/2015/02">
+ <metadata name="Application">solidkit</metadata>
+ <resources>
+  <object id="1" type="model">
+   <mesh>
+    <vertices>
+"#,
+    )?;
+    for p in &mesh.positions {
+        writeln!(
+            x,
+            "     <vertex x=\"{}\" y=\"{}\" z=\"{}\"/>",
+            p.x, p.y, p.z
+        )?;
+    }
+    x.write_all(b"    </vertices>\n    <triangles>\n")?;
+    for [a, b, c] in &mesh.triangles {
+        writeln!(x, "     <triangle v1=\"{a}\" v2=\"{b}\" v3=\"{c}\"/>")?;
+    }
+    x.write_all(
+        br#"    </triangles>
+   </mesh>
+  </object>
+ </resources>
+ <build>
+  <item objectid="1"/>
+ </build>
+</model>
+"#,
+    )?;
+    Ok(x)
+}
+
+/// Writes `mesh` as a 3MF package.
+pub(super) fn write(out: &mut dyn Write, mesh: &IndexedMesh) -> io::Result<()> {
+    let model = model_xml(mesh)?;
+    write_stored(
+        out,
+        &[
+            ZipEntry {
+                name: "[Content_Types].xml",
+                data: CONTENT_TYPES.as_bytes(),
+            },
+            ZipEntry {
+                name: "_rels/.rels",
+                data: RELATIONSHIPS.as_bytes(),
+            },
+            ZipEntry {
+                name: MODEL_PATH,
+                data: &model,
+            },
+        ],
+    )
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use glam::DVec3;
+
+    #[test]
+    fn coordinates_are_plain_decimals_that_read_back_exactly() {
+        let p = DVec3::new(0.1, -1e-7, 123_456_789.125);
+        let mesh = IndexedMesh::new(vec![p, DVec3::X, DVec3::Y], vec![[0, 1, 2]]);
+        let xml = String::from_utf8(model_xml(&mesh).unwrap()).unwrap();
+        let tag = xml.lines().find(|l| l.contains("<vertex")).unwrap();
+        assert_eq!(
+            tag.trim(),
+            r#"<vertex x="0.1" y="-0.0000001" z="123456789.125"/>"#
+        );
+        let back: Vec<f64> = tag
+            .split('"')
+            .skip(1)
+            .step_by(2)
+            .map(|v| v.parse().unwrap())
+            .collect();
+        assert_eq!(back, p.to_array());
+        assert!(xml.contains(r#"<triangle v1="0" v2="1" v3="2"/>"#));
+        assert!(xml.contains(r#"unit="millimeter""#) && xml.contains(r#"<item objectid="1"/>"#));
+    }
+}
