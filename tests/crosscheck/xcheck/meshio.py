@@ -1,7 +1,8 @@
 """Reading and writing triangle meshes as numpy arrays (vertices float64 [n, 3], faces int64
 [m, 3]). Readers: binary and ASCII STL (vertices welded by exact coordinates, as STL repeats them
-per facet), OFF (polygons fan-triangulated; OpenSCAD writes triangles), ASCII PLY, OBJ.
-Writers: OFF with full double precision (indexed: nothing to weld, nothing lost) and binary STL.
+per facet), OFF and OBJ (polygons fan-triangulated), the binary PLY written here, and the
+polygon faces of OBJ and OFF files (for subdivision). Writers: binary PLY with double vertices
+(indexed: nothing to weld, nothing lost) and binary STL.
 """
 import os
 import struct
@@ -114,18 +115,6 @@ def read_mesh(path) -> tuple:
     if ext == ".ply":
         return read_ply(path)
     raise ValueError(f"{path}: unsupported mesh format {ext}")
-
-
-def write_off(path, verts: np.ndarray, faces: np.ndarray) -> None:
-    """OFF with repr() floats (round-trips doubles exactly); written atomically."""
-    path = Path(path)
-    tmp = path.with_suffix(path.suffix + ".tmp")
-    with open(tmp, "w") as f:
-        f.write(f"OFF\n{len(verts)} {len(faces)} 0\n")
-        np.savetxt(f, np.asarray(verts, dtype=np.float64), fmt="%.17g")
-        tri = np.hstack([np.full((len(faces), 1), 3, dtype=np.int64), np.asarray(faces, dtype=np.int64)])
-        np.savetxt(f, tri, fmt="%d")
-    os.replace(tmp, path)
 
 
 def write_stl(path, verts: np.ndarray, faces: np.ndarray) -> None:

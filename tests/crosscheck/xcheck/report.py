@@ -12,7 +12,6 @@ from .cases import SYSTEMS
 def _versions() -> dict:
     out = {"python": platform.python_version()}
     try:
-        import manifold3d  # noqa: F401
         from importlib.metadata import version
         out["manifold3d"] = version("manifold3d")
     except Exception as e:  # pragma: no cover - reported, not fatal

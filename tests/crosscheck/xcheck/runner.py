@@ -16,7 +16,6 @@ from concurrent.futures import ThreadPoolExecutor
 from pathlib import Path
 
 from . import cases, paths, report, verdict
-from .cases import REFERENCES
 
 # References in the order their jobs are started: the slowest kinds first.
 START_ORDER = ["openscad", "openvdb", "manifold3d"]

@@ -1,7 +1,7 @@
 """One case in one system, in its own process (a crash or a hang stays there):
 `python -m xcheck.worker CASE SYSTEM` writes OUT/CASE/SYSTEM.json (status ok / skipped /
 error, timings, grid step and facet error, the measures of measure.py, the system's own
-measures) and the mesh (SYSTEM.off, or solidkit.stl as solidkit wrote it)."""
+measures) and the mesh (SYSTEM.ply, or solidkit.stl as solidkit wrote it)."""
 import json
 import sys
 import time
@@ -12,6 +12,19 @@ import numpy as np
 
 from . import cases, context, hausdorff, measure, meshio, paths
 from .tree import NotExpressible
+
+
+def _build_reference(system: str, ctx, work: Path, timeout: float) -> dict:
+    if system == "manifold3d":
+        from . import build_manifold
+        return build_manifold.build(ctx)
+    if system == "openvdb":
+        from . import build_openvdb
+        return build_openvdb.build(ctx)
+    if system == "openscad":
+        from . import build_openscad
+        return build_openscad.build(ctx, work, timeout)
+    raise ValueError(f"unknown system {system}")
 
 
 def run(name: str, system: str, timeout: float = 600.0) -> dict:
@@ -32,25 +45,13 @@ def run(name: str, system: str, timeout: float = 600.0) -> dict:
             ctx = context.make(case, work, box=built.pop("box"))
             built["grid"] = ctx.cell
         else:
+            # the references see the tree and a box computed without solidkit
             ctx = context.make(case, work)
-        result.update(cell=ctx.cell, diagonal=ctx.diagonal, box=[ctx.box[0].tolist(), ctx.box[1].tolist()])
-        if system == "solidkit":
-            pass
-        elif system == "manifold3d":
-            from . import build_manifold
-            built = build_manifold.build(ctx)
-        elif system == "openvdb":
-            from . import build_openvdb
-            built = build_openvdb.build(ctx)
-        elif system == "openscad":
-            from . import build_openscad
-            built = build_openscad.build(ctx, work, timeout)
-        else:
-            raise ValueError(f"unknown system {system}")
-        verts, faces = built.pop("verts"), built.pop("faces")
-        if system != "solidkit":
+            built = _build_reference(system, ctx, work, timeout)
             mesh_file = work / f"{system}.ply"
-            meshio.write_ply(mesh_file, verts, faces)
+            meshio.write_ply(mesh_file, built["verts"], built["faces"])
+        result.update(cell=ctx.cell, diagonal=ctx.diagonal, box=[ctx.box[0].tolist(), ctx.box[1].tolist()])
+        verts, faces = built.pop("verts"), built.pop("faces")
         result.update(built)
         result["status"] = "ok"
         result["mesh"] = str(mesh_file)
