@@ -70,6 +70,12 @@ fn menger_case(level: u32, resolution: usize, tolerance_cells: f64, min_cut: f64
             r.examples
         );
         assert_eq!(r.genus, Some(menger_genus(level)), "{what}");
+        assert_eq!(
+            r.self_intersections,
+            Some(0),
+            "{what}: self-intersecting pairs {:?}",
+            r.examples.self_intersections
+        );
     }
     let cut = rp.faces as f64 / ra.faces as f64;
     // Mesh to surface.

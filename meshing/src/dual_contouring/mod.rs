@@ -22,9 +22,11 @@
 
 mod adapt;
 mod block;
+mod certify;
 mod contour;
 mod crossing;
 mod emit;
+mod faces;
 mod patches;
 mod qef;
 mod sources;
