@@ -53,8 +53,10 @@ pub(crate) enum FaceKind {
     Low,
     /// The edge `t = 1` (shares `E`'s upper end).
     High,
-    /// Two segments on the face.
-    Ambiguous,
+    /// Two segments on the face; `E`'s segment cuts off its lower end (with the edge `t = 0`).
+    AmbiguousLow,
+    /// Two segments on the face; `E`'s segment cuts off its upper end (with the edge `t = 1`).
+    AmbiguousHigh,
 }
 
 impl FaceKind {
@@ -62,7 +64,11 @@ impl FaceKind {
     /// the far corners `f0` (`t = 0`), `f1`. `E` crosses (`e0 != e1`).
     pub fn of(e0: bool, e1: bool, f0: bool, f1: bool) -> Self {
         if e0 == f1 && e1 == f0 {
-            FaceKind::Ambiguous
+            if e0 {
+                FaceKind::AmbiguousLow
+            } else {
+                FaceKind::AmbiguousHigh
+            }
         } else if e0 != f0 {
             FaceKind::Low
         } else if e1 != f1 {
@@ -70,6 +76,11 @@ impl FaceKind {
         } else {
             FaceKind::Far
         }
+    }
+
+    /// True on a face with two segments.
+    pub fn ambiguous(self) -> bool {
+        matches!(self, FaceKind::AmbiguousLow | FaceKind::AmbiguousHigh)
     }
 }
 
@@ -117,49 +128,60 @@ pub(crate) fn in_zone(kind: FaceKind, q: DVec2, b: DVec2) -> bool {
     if !inside(b) || !inside(q) {
         return false;
     }
-    match kind {
-        FaceKind::Ambiguous => false,
-        FaceKind::Far => b.x < q.x - EPS,
-        FaceKind::Low | FaceKind::High => {
-            // Mirror so that the shared corner is (0, 0); the separator runs (0, 0) → q → (1, 1)
-            // and `E` (0, 0)–(0, 1) lies on its left.
-            let m = |p: DVec2| {
-                if kind == FaceKind::High {
-                    DVec2::new(p.x, 1.0 - p.y)
-                } else {
-                    p
-                }
-            };
-            let (q, b) = (m(q), m(b));
-            // Left of the ray from the corner through q.
-            if q.perp_dot(b) <= EPS {
-                return false;
-            }
-            if q.y > q.x {
-                // q above the diagonal: the zone is every point of the square left of that ray.
-                true
-            } else {
-                // Convex zone: also left of the segment q → (1, 1), like E's corner (0, 1).
-                let d = DVec2::ONE - q;
-                let side = d.perp_dot(DVec2::new(0.0, 1.0) - q);
-                side > 0.0 && d.perp_dot(b - q) > EPS * d.length().max(1.0)
-            }
+    if kind == FaceKind::Far {
+        return b.x < q.x - EPS;
+    }
+    // Mirror so that the corner `E` shares with the other edge of its segment is (0, 0); the
+    // separator runs from there through q to `far` and `E` (0, 0)–(0, 1) lies on its left. On an
+    // ambiguous face the segment keeps to its half s + t < 1 and `far` is the face centre.
+    let high = matches!(kind, FaceKind::High | FaceKind::AmbiguousHigh);
+    let m = |p: DVec2| if high { DVec2::new(p.x, 1.0 - p.y) } else { p };
+    let (q, b) = (m(q), m(b));
+    let far = if kind.ambiguous() {
+        if q.x + q.y >= 1.0 - EPS || b.x + b.y >= 1.0 - EPS {
+            return false;
         }
+        DVec2::splat(0.5)
+    } else {
+        DVec2::ONE
+    };
+    // Left of the ray from the corner through q.
+    if q.perp_dot(b) <= EPS {
+        return false;
+    }
+    if q.y > q.x {
+        // q above the corner's diagonal: the zone holds every such point.
+        true
+    } else {
+        // Convex zone: also on E's side of the segment q → far.
+        let d = far - q;
+        d.perp_dot(b - q) > EPS * d.length().max(1.0)
     }
 }
 
 /// True when the quad `v` (local coordinates of the four ring vertices, ring order around `E`,
 /// each strictly inside its quadrant cell) split along `v[0]`–`v[2]` (or `v[1]`–`v[3]` when
 /// `other_diagonal`) lies in the cones of `E`'s zones; `faces[k]` is the face between ring cells
-/// `k` and `k + 1`. See the module docs.
-pub(crate) fn certify(v: &[DVec3; 4], faces: &[RingFace; 4], other_diagonal: bool) -> bool {
+/// `k` and `k + 1`. When some ring cells hold several patches, `side(k, x)` says whether the
+/// local point `x` is strictly on ring cell `k`'s patch's side of its separating planes, and every
+/// corner of the quad's pieces in those cells must be. See the module docs.
+pub(crate) fn certify(
+    v: &[DVec3; 4],
+    faces: &[RingFace; 4],
+    other_diagonal: bool,
+    side: Option<&dyn Fn(usize, DVec3) -> bool>,
+) -> bool {
     let (i, j) = if other_diagonal { (1, 3) } else { (0, 2) };
     let (a, b) = (on_plane(v[i], v[j], 0), on_plane(v[i], v[j], 1));
     if !(a.is_finite() && b.is_finite()) {
         return false;
     }
+    let q = |f: usize| on_plane(v[f], v[(f + 1) % 4], if faces[f].on_x { 0 } else { 1 });
     if a.y == 0.0 && b.x == 0.0 {
-        return true; // the diagonal meets E: the quad is a fan from that point
+        // The diagonal meets E: the quad is a fan from that point.
+        return side.is_none_or(|side| {
+            (0..4).all(|k| side(k, v[k]) && side(k, a) && side(k, q(k)) && side(k, q((k + 3) % 4)))
+        });
     }
     // The cell whose quadrant the diagonal passes through.
     let quadrant = (b.x > 0.0, a.y > 0.0);
@@ -168,14 +190,13 @@ pub(crate) fn certify(v: &[DVec3; 4], faces: &[RingFace; 4], other_diagonal: boo
         return false;
     };
     // Its two faces, where the quad's trace bends at the diagonal's crossing.
+    let bend = |f: usize| if faces[f].on_x { a } else { b };
     for f in [(x + 3) % 4, x] {
-        let face = faces[f];
-        let q = on_plane(v[f], v[(f + 1) % 4], if face.on_x { 0 } else { 1 });
-        let bend = if face.on_x { a } else { b };
+        let on_x = faces[f].on_x;
         if !in_zone(
-            face.kind,
-            face_point(q, face.on_x),
-            face_point(bend, face.on_x),
+            faces[f].kind,
+            face_point(q(f), on_x),
+            face_point(bend(f), on_x),
         ) {
             return false;
         }
@@ -194,7 +215,32 @@ pub(crate) fn certify(v: &[DVec3; 4], faces: &[RingFace; 4], other_diagonal: boo
     let c = b + (a - b) * s;
     let r = DVec2::new(c.x, c.y).dot(w) / w.length_squared();
     let z = v[x].z;
-    r.is_finite() && r < 1.0 - EPS && c.z > z * r + EPS && c.z < 1.0 - (1.0 - z) * r - EPS
+    if !(r.is_finite() && r < 1.0 - EPS && c.z > z * r + EPS && c.z < 1.0 - (1.0 - z) * r - EPS) {
+        return false;
+    }
+    let Some(side) = side else {
+        return true;
+    };
+    // The corners of the pieces in each cell: its vertex, the dual-edge crossings and bends on
+    // its faces, and the point p where the triangle on E's side of the diagonal meets E.
+    let k1 = (x + 2) % 4;
+    let (t0, t1, t2) = (v[i], v[k1], v[j]);
+    let at = |p: DVec3| DVec2::new(p.x, p.y);
+    let area = (at(t1) - at(t0)).perp_dot(at(t2) - at(t0));
+    let w1 = at(t2).perp_dot(at(t0)) / area;
+    let w2 = at(t0).perp_dot(at(t1)) / area;
+    let pz = t0.z * (1.0 - w1 - w2) + t1.z * w1 + t2.z * w2;
+    if !pz.is_finite() {
+        return false;
+    }
+    let p = DVec3::new(0.0, 0.0, pz);
+    (0..4).all(|k| {
+        let bends = [(k + 3) % 4, k]
+            .into_iter()
+            .filter(|&f| f == x || f == (x + 3) % 4)
+            .all(|f| side(k, bend(f)));
+        bends && side(k, v[k]) && side(k, p) && side(k, q(k)) && side(k, q((k + 3) % 4))
+    })
 }
 
 #[cfg(test)]
@@ -212,7 +258,14 @@ mod tests {
         assert_eq!(FaceKind::of(true, false, true, false), FaceKind::Far);
         assert_eq!(FaceKind::of(true, false, false, false), FaceKind::Low);
         assert_eq!(FaceKind::of(true, false, true, true), FaceKind::High);
-        assert_eq!(FaceKind::of(true, false, false, true), FaceKind::Ambiguous);
+        assert_eq!(
+            FaceKind::of(true, false, false, true),
+            FaceKind::AmbiguousLow
+        );
+        assert_eq!(
+            FaceKind::of(false, true, true, false),
+            FaceKind::AmbiguousHigh
+        );
     }
 
     /// A flat quad around the edge (the plane z = 0.5) is certified either way; a quad whose
@@ -226,8 +279,8 @@ mod tests {
             DVec3::new(-0.5, 0.5, 0.5),
         ];
         for kind in [FaceKind::Far, FaceKind::Low, FaceKind::High] {
-            assert!(certify(&flat, &ring_faces(kind), false));
-            assert!(certify(&flat, &ring_faces(kind), true));
+            assert!(certify(&flat, &ring_faces(kind), false, None));
+            assert!(certify(&flat, &ring_faces(kind), true, None));
         }
         // The diagonal 0–2 passes through cell 1's quadrant beyond its vertex, which sits near
         // the edge: triangle 0 1 2 folds over the other.
@@ -237,9 +290,24 @@ mod tests {
             DVec3::new(0.9, 0.2, 0.5),
             DVec3::new(-0.5, 0.4, 0.5),
         ];
-        assert!(!certify(&folded, &ring_faces(FaceKind::Far), false));
+        assert!(!certify(&folded, &ring_faces(FaceKind::Far), false, None));
         // Along the other diagonal the same quad is fine.
-        assert!(certify(&folded, &ring_faces(FaceKind::Far), true));
+        assert!(certify(&folded, &ring_faces(FaceKind::Far), true, None));
+        // Unless a cell's separating plane cuts its piece: ring cell 0 keeps x < -0.3.
+        let side = |k: usize, p: DVec3| k != 0 || p.x < -0.3;
+        assert!(!certify(
+            &folded,
+            &ring_faces(FaceKind::Far),
+            true,
+            Some(&side)
+        ));
+        let side = |k: usize, p: DVec3| k != 0 || p.x < 0.5;
+        assert!(certify(
+            &folded,
+            &ring_faces(FaceKind::Far),
+            true,
+            Some(&side)
+        ));
     }
 
     #[test]
@@ -257,6 +325,20 @@ mod tests {
         let q = DVec2::new(0.8, 0.2);
         assert!(in_zone(FaceKind::Low, q, DVec2::new(0.5, 0.6)));
         assert!(!in_zone(FaceKind::Low, q, DVec2::new(0.95, 0.5)));
-        assert!(!in_zone(FaceKind::Ambiguous, q, DVec2::new(0.1, 0.5)));
+        // Ambiguous: the segment's half s + t < 1, separator (0, 0) → q → (0.5, 0.5).
+        let q = DVec2::new(0.3, 0.1);
+        assert!(in_zone(FaceKind::AmbiguousLow, q, DVec2::new(0.1, 0.5)));
+        assert!(!in_zone(FaceKind::AmbiguousLow, q, DVec2::new(0.3, 0.8)));
+        assert!(!in_zone(FaceKind::AmbiguousLow, q, DVec2::new(0.4, 0.05)));
+        assert!(in_zone(
+            FaceKind::AmbiguousHigh,
+            DVec2::new(0.3, 0.9),
+            DVec2::new(0.1, 0.5)
+        ));
+        assert!(!in_zone(
+            FaceKind::AmbiguousLow,
+            DVec2::new(0.6, 0.6),
+            DVec2::new(0.1, 0.5)
+        ));
     }
 }

@@ -3,7 +3,7 @@
 //! and places the split-face vertices.
 
 use super::block::{Block, NO_VERTEX, OwnedEdge};
-use super::certify::{EdgeFrame, FaceKind, RingFace, certify};
+use super::certify::{EPS, EdgeFrame, FaceKind, RingFace, certify};
 use super::crossing::DcField;
 use super::faces::{DualFace, face_vertex};
 use super::patches::{NO_PATCH, edge_number, face_segment, patch_table};
@@ -350,7 +350,7 @@ fn polygon<P: Probe>(
         let lower_cell = if lower_k == k { ca } else { cb };
         let bit_hi = 1 << (2 * fa + 1);
         let bit_lo = 1 << (2 * fa);
-        let ambiguous = kind == FaceKind::Ambiguous;
+        let ambiguous = kind.ambiguous();
         let segment = if ambiguous {
             face_segment(lower.mask, fa, 1, edge_in_cell[lower_k])
         } else {
@@ -367,7 +367,6 @@ fn polygon<P: Probe>(
             fan = true;
             corners.push(key);
         } else if ambiguous || several(&lower) || several(&upper) {
-            fan = true;
             let face = DualFace::new(
                 (lower.mask, lower_cell),
                 upper.mask,
@@ -377,6 +376,7 @@ fn polygon<P: Probe>(
                 spec,
             );
             if !face.crossing_ok(position(lower_k), position(upper_k), spec.cell) {
+                fan = true;
                 corners.push(key);
             }
         }
@@ -412,7 +412,27 @@ fn polygon<P: Probe>(
     }
     // Two triangles only where they provably stay clear of every other triangle; else a fan
     // from the crossing, which always does (see `certify`).
-    if certify(&p.map(|x| frame.local(x)), &faces, other_diagonal) {
+    // In cells with several patches the pieces must also keep to their patch's side.
+    let seps = [0, 1, 2, 3].map(|k| {
+        let (_, r) = refs[k];
+        let patch = table.patch_of_edge[r.mask as usize][edge_in_cell[k] as usize];
+        table.separators[r.mask as usize][patch as usize].as_slice()
+    });
+    let side = |k: usize, x: DVec3| {
+        // Local edge coordinates to ring cell k's unit coordinates.
+        let (du, dv) = around[k];
+        let mut unit = DVec3::ZERO;
+        unit[u] = x.x + du as f64;
+        unit[v] = x.y + dv as f64;
+        unit[axis] = x.z;
+        seps[k].iter().all(|s| s.value(unit) < -EPS)
+    };
+    let side: Option<&dyn Fn(usize, DVec3) -> bool> = if seps.iter().any(|s| !s.is_empty()) {
+        Some(&side)
+    } else {
+        None
+    };
+    if certify(&p.map(|x| frame.local(x)), &faces, other_diagonal, side) {
         Some(Ok(Quad {
             v: [vertex(0), vertex(1), vertex(2), vertex(3)],
             normal: e.normal,
