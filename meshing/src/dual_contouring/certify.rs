@@ -95,7 +95,7 @@ pub(crate) struct EdgeFrame {
 
 impl EdgeFrame {
     pub fn local(&self, p: DVec3) -> DVec3 {
-        let d = (p - self.origin) / self.cell;
+        let d = (p - self.origin) * (1.0 / self.cell);
         DVec3::new(d[self.axes[0]], d[self.axes[1]], d[self.axes[2]])
     }
 }

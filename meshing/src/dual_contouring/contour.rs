@@ -315,14 +315,17 @@ fn polygon<P: Probe>(
         r.mask >> (o[0] | o[1] << 1 | o[2] << 2) & 1 == 1
     };
     let several = |r: &CellRef| table.edges[r.mask as usize].len() > 1;
-    let mut corners = Vec::new();
+    // At most four cell vertices and four face vertices; a vector only for fans.
+    let mut corners = [Corner::Vertex(0); 8];
+    let mut count = 0;
     let mut fan = false;
     let mut faces = [RingFace {
         on_x: true,
         kind: FaceKind::Far,
     }; 4];
     for k in 0..4 {
-        corners.push(Corner::Vertex(vertex(k)));
+        corners[count] = Corner::Vertex(vertex(k));
+        count += 1;
         let l = (k + 1) % 4;
         let ((ca, ra), (cb, rb)) = (refs[k], refs[l]);
         let fa = (0..3).find(|&a| ca[a] != cb[a]).expect("neighbours");
@@ -365,7 +368,8 @@ fn polygon<P: Probe>(
             && table.split_face[upper.mask as usize] & bit_lo != 0
         {
             fan = true;
-            corners.push(key);
+            corners[count] = key;
+            count += 1;
         } else if ambiguous || several(&lower) || several(&upper) {
             let face = DualFace::new(
                 (lower.mask, lower_cell),
@@ -377,12 +381,13 @@ fn polygon<P: Probe>(
             );
             if !face.crossing_ok(position(lower_k), position(upper_k), spec.cell) {
                 fan = true;
-                corners.push(key);
+                corners[count] = key;
+                count += 1;
             }
         }
     }
     if fan {
-        return Some(Err(corners));
+        return Some(Err(corners[..count].to_vec()));
     }
     let p = [0, 1, 2, 3].map(position);
     let mut other_diagonal = better_by_normal(&p, e.normal);
@@ -439,7 +444,7 @@ fn polygon<P: Probe>(
             other_diagonal,
         }))
     } else {
-        Some(Err(corners))
+        Some(Err(corners[..count].to_vec()))
     }
 }
 

@@ -103,8 +103,13 @@ pub(crate) fn patch_table() -> &'static PatchTable {
 /// The cell edge along `axis` whose lower corner sits at unit `offset` within the cell (the
 /// numbering of [`crate::marching_cubes::table::edge_origin`]).
 pub(crate) fn edge_number(axis: usize, offset: [usize; 3]) -> u8 {
-    let others: Vec<usize> = (0..3).filter(|&a| a != axis).map(|a| offset[a]).collect();
-    (4 * axis + (others[0] | others[1] << 1)) as u8
+    // The other two axes in ascending order.
+    let (a, b) = match axis {
+        0 => (1, 2),
+        1 => (0, 2),
+        _ => (0, 1),
+    };
+    (4 * axis + (offset[a] | offset[b] << 1)) as u8
 }
 
 /// The four edges of face (`axis`, `side`) of a cell.
