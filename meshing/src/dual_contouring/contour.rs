@@ -1,6 +1,7 @@
 //! Global assembly: numbers the blocks' patch vertices, finds the four cells around every owned
-//! crossing edge and builds its polygon (a quad, or a longer polygon through split-face vertices),
-//! and places the split-face vertices.
+//! crossing edge and builds its polygon: a quad certified to split into two triangles
+//! ([`super::certify`]), or a polygon fanned from the edge's crossing (through face vertices where
+//! a side crosses a split face or is routed, [`super::faces`]); then places the face vertices.
 
 use super::block::{Block, NO_VERTEX, OwnedEdge};
 use super::certify::{EPS, EdgeFrame, FaceKind, RingFace, certify};
@@ -116,7 +117,8 @@ impl<F: DcField> Probe for FieldProbe<'_, F> {
     }
 }
 
-/// A polygon through split-face vertices; fanned from a centre vertex at the edge's crossing.
+/// A polygon fanned from a centre vertex at the edge's crossing (a quad the certificate rejected,
+/// or a polygon through face vertices).
 #[derive(Debug, Clone)]
 pub(crate) struct Special {
     pub corners: Vec<u32>,
@@ -132,7 +134,7 @@ pub(crate) struct Contour {
     pub bases: Vec<u32>,
     /// Quads, block by block.
     pub quads: Vec<Vec<Quad>>,
-    /// Polygons through split faces.
+    /// Fanned polygons.
     pub specials: Vec<Special>,
 }
 

@@ -1,7 +1,8 @@
 //! Manifold guarantees of dual contouring on adversarial inputs: every single-cell sign pattern in
 //! random neighbourhoods, random CSG trees, tangent spheres, the gyroid-sphere and a smooth union
 //! of 20 spheres. Each mesh must be a closed oriented 2-manifold with the Euler characteristic and
-//! shell count of the marching-cubes mesh of the same samples (dual contouring is its dual).
+//! shell count of the marching-cubes mesh of the same samples (dual contouring is its dual), and
+//! free of self-intersections (exact count of `crate::intersect`).
 
 use super::*;
 use crate::TopologyReport;
