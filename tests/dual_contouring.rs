@@ -1,6 +1,7 @@
 //! Dual contouring with `tolerance` on a box-heavy model: the Menger sponge. The adaptive mesh
-//! must be a closed oriented manifold of the sponge's genus (1409 at level 3) with many times fewer
-//! triangles than plain dual contouring, within the tolerance of the exact surface both ways:
+//! must be a closed oriented manifold of the sponge's genus (1409 at level 3), free of
+//! self-intersections (as the plain mesh), with many times fewer triangles than plain dual
+//! contouring, within the tolerance of the exact surface both ways:
 //! - mesh to surface: an upper bound of the distance from every vertex, edge midpoint and
 //!   triangle centroid to the surface (gradient projection steps until the point is inside, where
 //!   the field is the exact distance to the complement: boxes are convex, so the sponge's
@@ -70,6 +71,12 @@ fn menger_case(level: u32, resolution: usize, tolerance_cells: f64, min_cut: f64
             r.examples
         );
         assert_eq!(r.genus, Some(menger_genus(level)), "{what}");
+        assert_eq!(
+            r.self_intersections,
+            Some(0),
+            "{what}: self-intersecting pairs {:?}",
+            r.examples.self_intersections
+        );
     }
     let cut = rp.faces as f64 / ra.faces as f64;
     // Mesh to surface.

@@ -11,8 +11,10 @@
 //!
 //! Every fine vertex under a collapsed node maps to the node's vertex; polygons are then mapped
 //! and merged ([`super::emit`]). The result is checked: any vertex whose neighbourhood is not a
-//! closed oriented disk forbids the collapsed nodes around it, and the collapse is redone without
-//! them, until the mesh is clean (in the worst case the plain mesh, which always is).
+//! closed oriented disk, or any triangle that intersects another (exact test, `crate::intersect`;
+//! the argument of [`super::certify`] holds on the uniform grid only), forbids the collapsed nodes
+//! around it, and the collapse is redone without them, until the mesh is clean (in the worst case
+//! the plain mesh, which always is).
 
 use super::block::{Block, NO_VERTEX};
 use super::contour::Contour;
@@ -20,6 +22,8 @@ use super::emit;
 use super::patches::patch_table;
 use super::qef::Qef;
 use super::sources::Signs;
+use crate::IndexedMesh;
+use crate::intersect::self_intersections;
 use crate::marching_cubes::GridSpec;
 use glam::DVec3;
 use std::collections::{HashMap, HashSet};
@@ -57,9 +61,12 @@ pub(crate) fn simplify(
         );
         let cluster_end = positions.len();
         let tris = emit::triangles(contour, positions, Some(&map));
-        let bad = bad_vertices(&tris, positions.len());
+        let mut bad = bad_vertices(&tris, positions.len());
         if bad.is_empty() {
-            return tris;
+            bad = crossing_vertices(&tris, positions, base_len..cluster_end);
+            if bad.is_empty() {
+                return tris;
+            }
         }
         let mut progress = false;
         let mut touched: HashSet<u32> = HashSet::new();
@@ -270,6 +277,44 @@ fn node_state(
         qef: merged,
         vertex: 0,
     }
+}
+
+/// The vertices of triangles that intersect another triangle (exact test, [`crate::intersect`]);
+/// for a pair with no cluster vertex (ids in `clusters`), also the vertices of the triangles
+/// sharing a vertex with it (a quad re-split next to a merged corner).
+fn crossing_vertices(
+    tris: &[[u32; 3]],
+    positions: &[DVec3],
+    clusters: std::ops::Range<usize>,
+) -> HashSet<u32> {
+    let mesh = IndexedMesh {
+        positions: positions.to_vec(),
+        triangles: tris.to_vec(),
+    };
+    let Ok(found) = self_intersections(&mesh, usize::MAX) else {
+        // A vertex that is not finite: forbid everything touched by the clusters.
+        return clusters.map(|v| v as u32).collect();
+    };
+    let mut out = HashSet::new();
+    let mut lonely = HashSet::new();
+    for pair in found.examples {
+        for t in pair {
+            let t = tris[t as usize];
+            if t.iter().any(|&v| clusters.contains(&(v as usize))) {
+                out.extend(t);
+            } else {
+                lonely.extend(t);
+            }
+        }
+    }
+    if !lonely.is_empty() {
+        for t in tris {
+            if t.iter().any(|v| lonely.contains(v)) {
+                out.extend(t.iter().copied());
+            }
+        }
+    }
+    out
 }
 
 /// Vertices whose neighbourhood in `tris` is not a closed, oriented disk (also the corners of

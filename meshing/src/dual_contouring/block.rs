@@ -7,8 +7,9 @@
 //! axis). Edges on block faces are searched by both blocks, with programs that agree there, so
 //! both see the same crossings.
 
+use super::certify::{SEPARATOR_MARGIN, VERTEX_MARGIN};
 use super::crossing::{CrossingScratch, DcField, EdgeQuery, refine};
-use super::patches::{face_edges, patch_table};
+use super::patches::{NO_PATCH, Separator, face_edges, patch_table};
 use super::qef::Qef;
 use crate::marching_cubes::table::edge_origin;
 use crate::marching_cubes::{GridSpec, inside};
@@ -57,7 +58,9 @@ pub(crate) struct Block {
     pub qefs: Vec<Qef>,
     /// Owned crossing edges.
     pub edges: Vec<OwnedEdge>,
-    /// Crossings on ambiguous faces of the block's cells, by local edge id (sorted, unique).
+    /// Crossings on ambiguous faces of the block's cells and on every edge of its cells with
+    /// several patches (where dual edges may be routed through face vertices), by local edge id
+    /// (sorted, unique).
     pub face_crossings: Vec<(u16, DVec3, DVec3)>,
     /// Inside flags of the samples (kept for adaptive simplification only).
     pub inside: Vec<u8>,
@@ -175,7 +178,8 @@ pub(crate) fn build<F: DcField>(
                 let lo = point([i, j, k]);
                 let hi = lo + DVec3::splat(spec.cell);
                 let patches = &table.edges[mask as usize];
-                for patch in patches {
+                let inner = DVec3::splat(VERTEX_MARGIN * spec.cell);
+                for (pi, patch) in patches.iter().enumerate() {
                     let mut q = Qef::new(lo + half);
                     let (mut plo, mut phi) = (hi, lo);
                     for &edge in patch {
@@ -186,21 +190,32 @@ pub(crate) fn build<F: DcField>(
                         plo = plo.min(p);
                         phi = phi.max(p);
                     }
-                    // A lone patch may sit anywhere in its cell (sharp features); several patches
-                    // each stay within the box of their own crossings, apart from each other.
-                    let (clo, chi) = if patches.len() == 1 {
-                        (lo, hi)
+                    // A lone patch may sit anywhere strictly inside its cell (sharp features);
+                    // several patches each stay within the box of their own crossings and on
+                    // their own side of the planes separating them (see `certify`).
+                    let v = if patches.len() == 1 {
+                        q.solve(lo + inner, hi - inner).0
                     } else {
-                        (plo, phi)
+                        let clo = plo.max(lo + inner);
+                        let v = q.solve(clo, phi.min(hi - inner).max(clo)).0;
+                        let mass = q.reference + q.mass / f64::from(q.count.max(1));
+                        separated(v, mass, lo, spec.cell, &table.separators[mask as usize][pi])
                     };
-                    let (v, _) = q.solve(clo, chi);
                     b.vertices.push(v);
                     if keep {
                         b.qefs.push(q);
                     }
                 }
                 let amb = table.ambiguous[mask as usize];
-                if amb != 0 {
+                if patches.len() > 1 {
+                    // Dual edges next to this cell may be routed through its faces.
+                    for edge in 0..12u8 {
+                        if table.patch_of_edge[mask as usize][edge as usize] != NO_PATCH {
+                            let (ea, o) = edge_origin(edge);
+                            face_keys.push(local_edge([i + o[0], j + o[1], k + o[2]], ea));
+                        }
+                    }
+                } else if amb != 0 {
                     for axis in 0..3 {
                         for side in 0..2u8 {
                             if amb >> (2 * axis + side as usize) & 1 == 0 {
@@ -259,4 +274,19 @@ pub(crate) fn build<F: DcField>(
         b.inside = ins;
     }
     b
+}
+
+/// `v` moved towards `mass` (the mean of the patch's crossings, strictly inside every half-space
+/// of `seps`) just as far as needed to lie [`SEPARATOR_MARGIN`] inside each of them; `lo` is the
+/// cell's lower corner.
+fn separated(v: DVec3, mass: DVec3, lo: DVec3, cell: f64, seps: &[Separator]) -> DVec3 {
+    let (x, m) = ((v - lo) / cell, (mass - lo) / cell);
+    let mut t: f64 = 1.0;
+    for s in seps {
+        let (fx, fm) = (s.value(x), s.value(m));
+        if fx > -SEPARATOR_MARGIN {
+            t = t.min(((-SEPARATOR_MARGIN - fm) / (fx - fm)).max(0.0));
+        }
+    }
+    if t >= 1.0 { v } else { mass + (v - mass) * t }
 }

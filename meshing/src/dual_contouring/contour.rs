@@ -1,13 +1,14 @@
 //! Global assembly: numbers the blocks' patch vertices, finds the four cells around every owned
-//! crossing edge and builds its polygon (a quad, or a longer polygon through split-face vertices),
-//! and places the split-face vertices.
+//! crossing edge and builds its polygon: a quad certified to split into two triangles
+//! ([`super::certify`]), or a polygon fanned from the edge's crossing (through face vertices where
+//! a side crosses a split face or is routed, [`super::faces`]); then places the face vertices.
 
-use super::block::{Block, NO_VERTEX, OwnedEdge, local_edge};
+use super::block::{Block, NO_VERTEX, OwnedEdge};
+use super::certify::{EPS, EdgeFrame, FaceKind, RingFace, certify};
 use super::crossing::DcField;
-use super::patches::{NO_PATCH, edge_number, face_edges, face_segment, patch_table};
-use super::qef::Qef;
+use super::faces::{DualFace, face_vertex};
+use super::patches::{NO_PATCH, edge_number, face_segment, patch_table};
 use crate::marching_cubes::GridSpec;
-use crate::marching_cubes::table::edge_origin;
 use glam::DVec3;
 use rayon::prelude::*;
 use std::collections::HashMap;
@@ -116,7 +117,8 @@ impl<F: DcField> Probe for FieldProbe<'_, F> {
     }
 }
 
-/// A polygon through split-face vertices; fanned from a centre vertex at the edge's crossing.
+/// A polygon fanned from a centre vertex at the edge's crossing (a quad the certificate rejected,
+/// or a polygon through face vertices).
 #[derive(Debug, Clone)]
 pub(crate) struct Special {
     pub corners: Vec<u32>,
@@ -132,7 +134,7 @@ pub(crate) struct Contour {
     pub bases: Vec<u32>,
     /// Quads, block by block.
     pub quads: Vec<Vec<Quad>>,
-    /// Polygons through split faces.
+    /// Fanned polygons.
     pub specials: Vec<Special>,
 }
 
@@ -251,8 +253,9 @@ pub(crate) fn assemble<P: Probe>(
     }
 }
 
-/// The polygon around owned edge `e`: `Ok` for a plain quad, `Err` with split-face corners, `None`
-/// when a cell around it lies outside the grid.
+/// The polygon around owned edge `e`: `Ok` for a quad certified as two triangles, `Err` with its
+/// corners (cell vertices and any face vertices) for a fan from the crossing, `None` when a cell
+/// around it lies outside the grid.
 fn polygon<P: Probe>(
     b: &Block,
     e: &OwnedEdge,
@@ -303,101 +306,148 @@ fn polygon<P: Probe>(
         let p = table.patch_of_edge[r.mask as usize][edge_in_cell[k] as usize];
         o.vertices[(o.first[r.local] + p as u32) as usize]
     };
-    let mut corners = Vec::new();
-    let mut split = false;
+    let frame = EdgeFrame {
+        origin: spec.point(g[0], g[1], g[2]),
+        cell: spec.cell,
+        axes: [u, v, axis],
+    };
+    let inside_at = |k: usize, s: [usize; 3]| {
+        let (c, r) = refs[k];
+        let o = [0, 1, 2].map(|a| s[a] - c[a]);
+        r.mask >> (o[0] | o[1] << 1 | o[2] << 2) & 1 == 1
+    };
+    let several = |r: &CellRef| table.edges[r.mask as usize].len() > 1;
+    // At most four cell vertices and four face vertices; a vector only for fans.
+    let mut corners = [Corner::Vertex(0); 8];
+    let mut count = 0;
+    let mut fan = false;
+    let mut faces = [RingFace {
+        on_x: true,
+        kind: FaceKind::Far,
+    }; 4];
     for k in 0..4 {
-        corners.push(Corner::Vertex(vertex(k)));
+        corners[count] = Corner::Vertex(vertex(k));
+        count += 1;
         let l = (k + 1) % 4;
         let ((ca, ra), (cb, rb)) = (refs[k], refs[l]);
         let fa = (0..3).find(|&a| ca[a] != cb[a]).expect("neighbours");
-        let (lower, upper, lower_k) = if ca[fa] < cb[fa] {
-            (ra, rb, k)
-        } else {
-            (rb, ra, l)
+        // The face's far corners (away from the edge, within the face).
+        let w = if fa == u { v } else { u };
+        let mut f0 = g;
+        f0[w] = if ca[w] == g[w] { g[w] + 1 } else { g[w] - 1 };
+        let mut f1 = f0;
+        f1[axis] += 1;
+        let kind = FaceKind::of(
+            e.lower_inside,
+            !e.lower_inside,
+            inside_at(k, f0),
+            inside_at(k, f1),
+        );
+        faces[k] = RingFace {
+            on_x: fa == u,
+            kind,
         };
+        let (lower, upper, lower_k, upper_k) = if ca[fa] < cb[fa] {
+            (ra, rb, k, l)
+        } else {
+            (rb, ra, l, k)
+        };
+        let lower_cell = if lower_k == k { ca } else { cb };
         let bit_hi = 1 << (2 * fa + 1);
         let bit_lo = 1 << (2 * fa);
+        let ambiguous = kind.ambiguous();
+        let segment = if ambiguous {
+            face_segment(lower.mask, fa, 1, edge_in_cell[lower_k])
+        } else {
+            0
+        };
+        let key = Corner::Face(FaceKey {
+            cell: lower_cell,
+            axis: fa as u8,
+            segment,
+        });
         if table.split_face[lower.mask as usize] & bit_hi != 0
             && table.split_face[upper.mask as usize] & bit_lo != 0
         {
-            split = true;
-            let cell = if lower_k == k { ca } else { cb };
-            let segment = face_segment(lower.mask, fa, 1, edge_in_cell[lower_k]);
-            corners.push(Corner::Face(FaceKey {
-                cell,
-                axis: fa as u8,
-                segment,
-            }));
-        }
-    }
-    if split {
-        Some(Err(corners))
-    } else {
-        let p = [0, 1, 2, 3].map(position);
-        let mut other_diagonal = better_by_normal(&p, e.normal);
-        // A folded quad: the diagonal whose midpoint lies nearer the surface keeps the crease
-        // (sharp edges run along diagonals), unless that flips a triangle.
-        let (m0, m1) = (0.5 * (p[0] + p[2]), 0.5 * (p[1] + p[3]));
-        if (m0 - m1).length() > FOLD * spec.cell {
-            let mut value = |m: DVec3| {
-                let mut c = [0, 1, 2].map(|a| ((m[a] - spec.origin[a]) / spec.cell).floor());
-                c[axis] = g[axis] as f64;
-                c[u] = c[u].clamp(g[u] as f64 - 1.0, g[u] as f64);
-                c[v] = c[v].clamp(g[v] as f64 - 1.0, g[v] as f64);
-                let c = c.map(|x| x as usize);
-                let r = cells.get(c).expect("the four cells are surface cells");
-                probe.value(&cells.blocks[r.block], m, scratch).abs()
-            };
-            let (f0, f1) = (value(m0), value(m1));
-            let flips = |t: [[usize; 3]; 2]| {
-                t.iter()
-                    .any(|t| agreement([p[t[0]], p[t[1]], p[t[2]]], e.normal) <= 0.0)
-            };
-            let by_field = f1 < f0;
-            let tris = |d: bool| if d { SECOND } else { FIRST };
-            if !flips(tris(by_field)) {
-                other_diagonal = by_field;
+            fan = true;
+            corners[count] = key;
+            count += 1;
+        } else if ambiguous || several(&lower) || several(&upper) {
+            let face = DualFace::new(
+                (lower.mask, lower_cell),
+                upper.mask,
+                fa,
+                edge_in_cell[lower_k],
+                edge_in_cell[upper_k],
+                spec,
+            );
+            if !face.crossing_ok(position(lower_k), position(upper_k), spec.cell) {
+                fan = true;
+                corners[count] = key;
+                count += 1;
             }
         }
+    }
+    if fan {
+        return Some(Err(corners[..count].to_vec()));
+    }
+    let p = [0, 1, 2, 3].map(position);
+    let mut other_diagonal = better_by_normal(&p, e.normal);
+    // A folded quad: the diagonal whose midpoint lies nearer the surface keeps the crease
+    // (sharp edges run along diagonals), unless that flips a triangle.
+    let (m0, m1) = (0.5 * (p[0] + p[2]), 0.5 * (p[1] + p[3]));
+    if (m0 - m1).length() > FOLD * spec.cell {
+        let mut value = |m: DVec3| {
+            let mut c = [0, 1, 2].map(|a| ((m[a] - spec.origin[a]) / spec.cell).floor());
+            c[axis] = g[axis] as f64;
+            c[u] = c[u].clamp(g[u] as f64 - 1.0, g[u] as f64);
+            c[v] = c[v].clamp(g[v] as f64 - 1.0, g[v] as f64);
+            let c = c.map(|x| x as usize);
+            let r = cells.get(c).expect("the four cells are surface cells");
+            probe.value(&cells.blocks[r.block], m, scratch).abs()
+        };
+        let (f0, f1) = (value(m0), value(m1));
+        let flips = |t: [[usize; 3]; 2]| {
+            t.iter()
+                .any(|t| agreement([p[t[0]], p[t[1]], p[t[2]]], e.normal) <= 0.0)
+        };
+        let by_field = f1 < f0;
+        let tris = |d: bool| if d { SECOND } else { FIRST };
+        if !flips(tris(by_field)) {
+            other_diagonal = by_field;
+        }
+    }
+    // Two triangles only where they provably stay clear of every other triangle; else a fan
+    // from the crossing, which always does (see `certify`).
+    // In cells with several patches the pieces must also keep to their patch's side.
+    let seps = [0, 1, 2, 3].map(|k| {
+        let (_, r) = refs[k];
+        let patch = table.patch_of_edge[r.mask as usize][edge_in_cell[k] as usize];
+        table.separators[r.mask as usize][patch as usize].as_slice()
+    });
+    let side = |k: usize, x: DVec3| {
+        // Local edge coordinates to ring cell k's unit coordinates.
+        let (du, dv) = around[k];
+        let mut unit = DVec3::ZERO;
+        unit[u] = x.x + du as f64;
+        unit[v] = x.y + dv as f64;
+        unit[axis] = x.z;
+        seps[k].iter().all(|s| s.value(unit) < -EPS)
+    };
+    let side: Option<&dyn Fn(usize, DVec3) -> bool> = if seps.iter().any(|s| !s.is_empty()) {
+        Some(&side)
+    } else {
+        None
+    };
+    if certify(&p.map(|x| frame.local(x)), &faces, other_diagonal, side) {
         Some(Ok(Quad {
             v: [vertex(0), vertex(1), vertex(2), vertex(3)],
             normal: e.normal,
             other_diagonal,
         }))
+    } else {
+        Some(Err(corners[..count].to_vec()))
     }
-}
-
-/// Position of a split-face vertex: where the surface's tangent lines at the segment's two
-/// crossings meet within the face (a QEF of their planes and the face plane), kept in the face.
-fn face_vertex(k: &FaceKey, cells: &Cells, spec: &GridSpec) -> DVec3 {
-    let r = cells.get(k.cell).expect("split faces lie on surface cells");
-    let b = &cells.blocks[r.block];
-    let axis = k.axis as usize;
-    let l = [0, 1, 2].map(|a| k.cell[a] - b.min[a]);
-    let lo = spec.point(k.cell[0], k.cell[1], k.cell[2]);
-    let mut hi = lo + DVec3::splat(spec.cell);
-    let mut flo = lo;
-    flo[axis] += spec.cell;
-    hi[axis] = flo[axis];
-    let mut q = Qef::new(0.5 * (flo + hi));
-    q.add(
-        flo,
-        DVec3::from_array(std::array::from_fn(|a| f64::from(u8::from(a == axis)))),
-    );
-    for edge in face_edges(axis, 1) {
-        if face_segment(r.mask, axis, 1, edge) != k.segment {
-            continue;
-        }
-        let (ea, o) = edge_origin(edge);
-        let key = local_edge([l[0] + o[0], l[1] + o[1], l[2] + o[2]], ea);
-        let at = b
-            .face_crossings
-            .binary_search_by_key(&key, |c| c.0)
-            .expect("ambiguous-face crossings are kept");
-        let (_, p, n) = b.face_crossings[at];
-        q.add(p, n);
-    }
-    q.solve(flo, hi).0
 }
 
 /// Quads whose diagonal midpoints are further apart than this (in cells) are folded: their

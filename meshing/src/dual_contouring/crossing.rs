@@ -6,6 +6,7 @@
 //! bracket from the sample signs and bisecting whenever a step leaves it. All crossings of a block
 //! are refined together, one batched evaluation per step.
 
+use super::certify::CROSSING_MARGIN;
 use glam::DVec3;
 use solidkit_kernel::Program;
 use solidkit_kernel::program::GradientScratch;
@@ -62,6 +63,8 @@ pub(crate) struct CrossingScratch {
 }
 
 /// Crossing points and unit normals (pointing to positive values) of `queries`, appended to `out`.
+/// Points stay [`CROSSING_MARGIN`] (of the edge length) away from the samples, so every crossing
+/// lies strictly inside its edge (a surface through a sample is moved that far).
 pub(crate) fn refine<F: DcField>(
     field: &F,
     queries: &[EdgeQuery],
@@ -125,6 +128,7 @@ pub(crate) fn refine<F: DcField>(
             let d = (q.b - q.a).normalize();
             if q.fa < 0.0 { d } else { -d }
         };
-        (s.points[k], normal)
+        let t = s.t[k].clamp(CROSSING_MARGIN, 1.0 - CROSSING_MARGIN);
+        (q.a + (q.b - q.a) * t, normal)
     }));
 }

@@ -14,17 +14,30 @@
 //! such a face gets one vertex per segment and the polygons through it are fanned from a centre
 //! vertex, so no mesh edge ever has more than two triangles and every vertex link is one cycle.
 //!
-//! `tolerance` collapses octree nodes topology-safely within the error budget ([`adapt`]).
+//! Free of self-intersections by construction ([`certify`]): every piece of surface inside a cell
+//! lies in a cone from the cell's patch vertex (kept strictly inside the cell) over a zone of the
+//! cell's boundary, and the zones of different crossing edges are disjoint. A quad stays two
+//! triangles only where a local test shows its pieces keep to their cones; otherwise it is fanned
+//! from its crossing, which always does. Cells with several patches keep each patch on its own
+//! side of a separating plane, and dual edges whose face crossing breaks the zones are routed
+//! through a face vertex ([`faces`]).
 //!
-//! Files: `patches.rs` (cell patch table), `qef.rs`, `crossing.rs`, `block.rs` (one brick or
-//! tile), `sources.rs` (sparse octree or dense grid), `contour.rs` (polygons), `emit.rs`
-//! (triangles), `adapt.rs` (simplification).
+//! `tolerance` collapses octree nodes topology-safely within the error budget ([`adapt`]); the
+//! result is checked for non-manifold vertices and (exactly) for crossing triangles, and nodes
+//! next to either are not collapsed.
+//!
+//! Files: `patches.rs` (cell patch table, separating planes), `qef.rs`, `crossing.rs`,
+//! `block.rs` (one brick or tile), `sources.rs` (sparse octree or dense grid), `contour.rs`
+//! (polygons), `certify.rs` (why no triangles cross; the quad certificate), `faces.rs` (face
+//! vertices), `emit.rs` (triangles), `adapt.rs` (simplification).
 
 mod adapt;
 mod block;
+mod certify;
 mod contour;
 mod crossing;
 mod emit;
+mod faces;
 mod patches;
 mod qef;
 mod sources;

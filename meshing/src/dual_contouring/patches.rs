@@ -7,6 +7,12 @@
 //! face would join the same two vertices (a doubled edge, four triangles on one mesh edge). Such a
 //! face gets one extra vertex per segment ([`PatchTable::split_face`]); the polygons around the
 //! face's edges then go through it and every mesh edge keeps exactly two triangles.
+//!
+//! A cell with several patches also gets, for every pair of its patches, a plane that separates
+//! them for any crossing positions ([`PatchTable::separators`]): every edge of one patch lies in
+//! one closed half-space with at least one end strictly inside it (so every crossing strictly
+//! inside the edge is strictly inside the half-space), and the other patch's edges in the other.
+//! Keeping each patch's surface in its own open half-spaces keeps the patches apart.
 
 use crate::marching_cubes::table::{case_table, corner_offset, edge_corners, face_corners};
 use std::sync::LazyLock;
@@ -25,6 +31,66 @@ pub(crate) struct PatchTable {
     /// `split_face[mask]`: bit `2·axis + side` set when that face is ambiguous and all four of its
     /// edges belong to one patch of the cell.
     pub split_face: Vec<u8>,
+    /// `separators[mask][patch]`: half-spaces `a · x < b` (`x` in cell units from the cell's
+    /// lower corner) holding every crossing of the patch strictly and every crossing of each
+    /// other patch of the cell strictly outside; empty for a lone patch.
+    pub separators: Vec<Vec<Vec<Separator>>>,
+}
+
+/// A half-space `a · x < b` in cell units (see [`PatchTable::separators`]).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(crate) struct Separator {
+    pub a: [i8; 3],
+    pub b: i8,
+}
+
+impl Separator {
+    /// `a · x − b` (negative inside).
+    pub fn value(&self, x: glam::DVec3) -> f64 {
+        f64::from(self.a[0]) * x.x + f64::from(self.a[1]) * x.y + f64::from(self.a[2]) * x.z
+            - f64::from(self.b)
+    }
+
+    fn at_corner(&self, c: u8) -> i32 {
+        let o = corner_offset(c);
+        (0..3)
+            .map(|k| i32::from(self.a[k]) * o[k] as i32)
+            .sum::<i32>()
+            - i32::from(self.b)
+    }
+
+    /// True when every edge in `edges` has both ends at `sign · value ≤ 0` and one `< 0`.
+    fn holds(&self, edges: &[u8], sign: i32) -> bool {
+        edges.iter().all(|&e| {
+            let (p, q) = edge_corners(e);
+            let (vp, vq) = (sign * self.at_corner(p), sign * self.at_corner(q));
+            vp <= 0 && vq <= 0 && (vp < 0 || vq < 0)
+        })
+    }
+}
+
+/// A plane with small integer coefficients separating the edges of two patches: `a` strictly
+/// negative side, `b` strictly positive side (as [`Separator::holds`] says).
+fn separator(a: &[u8], b: &[u8]) -> Option<Separator> {
+    for range in [1i8, 2] {
+        let span = -range..=range;
+        for x in span.clone() {
+            for y in span.clone() {
+                for z in span.clone() {
+                    if (x, y, z) == (0, 0, 0) {
+                        continue;
+                    }
+                    for c in -3 * range..=3 * range {
+                        let s = Separator { a: [x, y, z], b: c };
+                        if s.holds(a, 1) && s.holds(b, -1) {
+                            return Some(s);
+                        }
+                    }
+                }
+            }
+        }
+    }
+    None
 }
 
 static TABLE: LazyLock<PatchTable> = LazyLock::new(build);
@@ -37,8 +103,13 @@ pub(crate) fn patch_table() -> &'static PatchTable {
 /// The cell edge along `axis` whose lower corner sits at unit `offset` within the cell (the
 /// numbering of [`crate::marching_cubes::table::edge_origin`]).
 pub(crate) fn edge_number(axis: usize, offset: [usize; 3]) -> u8 {
-    let others: Vec<usize> = (0..3).filter(|&a| a != axis).map(|a| offset[a]).collect();
-    (4 * axis + (others[0] | others[1] << 1)) as u8
+    // The other two axes in ascending order.
+    let (a, b) = match axis {
+        0 => (1, 2),
+        1 => (0, 2),
+        _ => (0, 1),
+    };
+    (4 * axis + (offset[a] | offset[b] << 1)) as u8
 }
 
 /// The four edges of face (`axis`, `side`) of a cell.
@@ -60,6 +131,7 @@ fn build() -> PatchTable {
     let mut edges = Vec::with_capacity(256);
     let mut ambiguous = Vec::with_capacity(256);
     let mut split_face = Vec::with_capacity(256);
+    let mut separators = Vec::with_capacity(256);
     for mask in 0..256usize {
         let mut of = [NO_PATCH; 12];
         for (p, l) in mc.loops[mask].iter().enumerate() {
@@ -85,6 +157,22 @@ fn build() -> PatchTable {
                 }
             }
         }
+        let loops = &mc.loops[mask];
+        let mut seps = vec![Vec::new(); loops.len()];
+        for i in 0..loops.len() {
+            for j in i + 1..loops.len() {
+                // Every pair of patches of a marching-cubes case has one (tested below); a
+                // missing one would leave that pair unseparated, never panic.
+                if let Some(s) = separator(&loops[i], &loops[j]) {
+                    seps[i].push(s);
+                    seps[j].push(Separator {
+                        a: s.a.map(|x| -x),
+                        b: -s.b,
+                    });
+                }
+            }
+        }
+        separators.push(seps);
         patch_of_edge.push(of);
         edges.push(mc.loops[mask].clone());
         ambiguous.push(amb);
@@ -95,6 +183,7 @@ fn build() -> PatchTable {
         edges,
         ambiguous,
         split_face,
+        separators,
     }
 }
 
@@ -160,5 +249,40 @@ mod tests {
             }
         }
         assert!(splits > 0);
+    }
+
+    /// Every pair of patches of every case has a separating plane, and it separates: crossings
+    /// anywhere strictly inside the edges land strictly on their own patch's side.
+    #[test]
+    fn every_pair_of_patches_is_separated() {
+        let t = patch_table();
+        let mut pairs = 0;
+        for mask in 0..256usize {
+            let n = t.edges[mask].len();
+            for p in 0..n {
+                assert_eq!(t.separators[mask][p].len(), n - 1, "mask {mask} patch {p}");
+                pairs += t.separators[mask][p].len();
+                for s in &t.separators[mask][p] {
+                    for &e in &t.edges[mask][p] {
+                        let (axis, o) = edge_origin(e);
+                        for f in [1e-9, 0.5, 1.0 - 1e-9] {
+                            let mut x = glam::DVec3::new(o[0] as f64, o[1] as f64, o[2] as f64);
+                            x[axis] += f;
+                            assert!(s.value(x) < 0.0, "mask {mask} patch {p} edge {e}");
+                        }
+                    }
+                    // The same plane, negated, is listed for exactly one other patch.
+                    let flipped = Separator {
+                        a: s.a.map(|x| -x),
+                        b: -s.b,
+                    };
+                    let owners = (0..n)
+                        .filter(|&q| q != p && t.separators[mask][q].contains(&flipped))
+                        .count();
+                    assert!(owners >= 1, "mask {mask} patch {p}");
+                }
+            }
+        }
+        assert!(pairs > 0);
     }
 }

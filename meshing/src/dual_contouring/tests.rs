@@ -30,6 +30,12 @@ fn assert_closed_manifold(m: &IndexedMesh, what: &str) -> TopologyReport {
         r.inconsistent_edges,
         r.examples
     );
+    assert_eq!(
+        r.self_intersections,
+        Some(0),
+        "{what}: self-intersecting pairs {:?}",
+        r.examples.self_intersections
+    );
     r
 }
 
