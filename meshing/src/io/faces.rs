@@ -17,6 +17,21 @@ pub(super) trait FaceSink {
 }
 
 /// Triangles: polygons triangulated by [`triangulate_polygon`].
+/// A reader of one polygon format: fills the sink with the faces, returns the positions.
+pub(super) type ReadFaces =
+    fn(&[u8], &str, &mut dyn FaceSink) -> Result<Vec<glam::DVec3>, super::MeshIoError>;
+
+/// Reads a file of a polygon format as triangles (n-gons triangulated by the sink).
+pub(super) fn triangles(
+    bytes: &[u8],
+    name: &str,
+    read_faces: ReadFaces,
+) -> Result<crate::IndexedMesh, super::MeshIoError> {
+    let mut triangles = Vec::new();
+    let positions = read_faces(bytes, name, &mut triangles)?;
+    Ok(crate::IndexedMesh::new(positions, triangles))
+}
+
 impl FaceSink for Vec<[u32; 3]> {
     fn add(&mut self, positions: &[DVec3], corners: &[u32]) -> Result<(), PolygonError> {
         triangulate_polygon(positions, corners, self)

@@ -150,9 +150,9 @@ pub fn read_mesh_bytes(
 ) -> Result<IndexedMesh, MeshIoError> {
     match format {
         MeshFormat::Stl => stl::read(bytes, name),
-        MeshFormat::Obj => obj::read(bytes, name),
-        MeshFormat::Ply => ply::read(bytes, name),
-        MeshFormat::Off => off::read(bytes, name),
+        MeshFormat::Obj => faces::triangles(bytes, name, obj::read_faces),
+        MeshFormat::Ply => faces::triangles(bytes, name, ply::read_faces),
+        MeshFormat::Off => faces::triangles(bytes, name, off::read_faces),
         MeshFormat::ThreeMf | MeshFormat::Glb => Err(MeshIoError::invalid(
             name,
             format!(

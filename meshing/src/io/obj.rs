@@ -24,13 +24,6 @@ use super::weld::Welder;
 use super::{Location, MeshIoError};
 use crate::IndexedMesh;
 
-/// Reads an OBJ file.
-pub(super) fn read(bytes: &[u8], name: &str) -> Result<IndexedMesh, MeshIoError> {
-    let mut triangles = Vec::new();
-    let positions = read_faces(bytes, name, &mut triangles)?;
-    Ok(IndexedMesh::new(positions, triangles))
-}
-
 /// Reads an OBJ file's faces into `sink`; returns the positions.
 pub(super) fn read_faces(
     bytes: &[u8],

@@ -20,13 +20,6 @@ use crate::IndexedMesh;
 /// A line with content: its number and its words, comments removed.
 type ContentLine<'a> = (usize, Vec<&'a [u8]>);
 
-/// Reads an OFF file.
-pub(super) fn read(bytes: &[u8], name: &str) -> Result<IndexedMesh, MeshIoError> {
-    let mut triangles = Vec::new();
-    let positions = read_faces(bytes, name, &mut triangles)?;
-    Ok(IndexedMesh::new(positions, triangles))
-}
-
 /// Reads an OFF file's faces into `sink`; returns the positions.
 pub(super) fn read_faces(
     bytes: &[u8],

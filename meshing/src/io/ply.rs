@@ -19,13 +19,6 @@ use super::text::{Tokens, capped_capacity, parse_f64, parse_i64, show};
 use super::{Encoding, Location, MeshIoError};
 use crate::IndexedMesh;
 
-/// Reads a PLY file.
-pub(super) fn read(bytes: &[u8], name: &str) -> Result<IndexedMesh, MeshIoError> {
-    let mut triangles = Vec::new();
-    let positions = read_faces(bytes, name, &mut triangles)?;
-    Ok(IndexedMesh::new(positions, triangles))
-}
-
 /// Reads a PLY file's faces into `sink`; returns the positions.
 pub(super) fn read_faces(
     bytes: &[u8],
