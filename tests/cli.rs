@@ -2,24 +2,17 @@
 //! errors, and no output file left behind on failure. Runs the real binary.
 
 use serde_json::Value;
-use solidkit_tests::fixture;
+use solidkit_tests::{fixture, path_str};
 use std::path::Path;
-use std::process::{Command, Output};
+use std::process::Output;
 
 fn solidkit(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_solidkit"))
-        .args(args)
-        .output()
-        .expect("run solidkit")
+    solidkit_tests::run_cli(env!("CARGO_BIN_EXE_solidkit"), args)
 }
 
 fn stdout_json(o: &Output) -> Value {
     serde_json::from_slice(&o.stdout)
         .unwrap_or_else(|e| panic!("{e}: {}", String::from_utf8_lossy(&o.stdout)))
-}
-
-fn path_str(p: &Path) -> &str {
-    p.to_str().expect("UTF-8 path")
 }
 
 const KEYS: [&str; 17] = [

@@ -3,20 +3,13 @@
 //! and a hostile script is stopped with a one-line located error.
 
 use serde_json::Value;
-use solidkit_tests::fixture;
+use solidkit_tests::{fixture, path_str};
 use std::path::Path;
-use std::process::{Command, Output};
+use std::process::Output;
 use std::time::{Duration, Instant};
 
 fn solidkit(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_solidkit"))
-        .args(args)
-        .output()
-        .expect("run solidkit")
-}
-
-fn path_str(p: &Path) -> &str {
-    p.to_str().expect("UTF-8 path")
+    solidkit_tests::run_cli(env!("CARGO_BIN_EXE_solidkit"), args)
 }
 
 fn mesh_report(input: &Path, out: Option<&Path>) -> Value {

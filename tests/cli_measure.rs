@@ -3,19 +3,12 @@
 //! error contract; self-intersections in `check` and `mesh` (exit code, `--no-self-intersections`).
 
 use serde_json::Value;
-use solidkit_tests::fixture;
+use solidkit_tests::{fixture, path_str};
 use std::path::Path;
-use std::process::{Command, Output};
+use std::process::Output;
 
 fn solidkit(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_solidkit"))
-        .args(args)
-        .output()
-        .expect("run solidkit")
-}
-
-fn path_str(p: &Path) -> &str {
-    p.to_str().expect("UTF-8 path")
+    solidkit_tests::run_cli(env!("CARGO_BIN_EXE_solidkit"), args)
 }
 
 fn compare_json(a: &Path, b: &Path, extra: &[&str]) -> Value {

@@ -4,19 +4,12 @@
 
 use serde_json::Value;
 use solidkit_meshing::io::{read_mesh, read_polygon_mesh};
-use solidkit_tests::fixture;
+use solidkit_tests::{fixture, path_str};
 use std::path::Path;
-use std::process::{Command, Output};
+use std::process::Output;
 
 fn solidkit(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_solidkit"))
-        .args(args)
-        .output()
-        .expect("run solidkit")
-}
-
-fn path_str(p: &Path) -> &str {
-    p.to_str().expect("UTF-8 path")
+    solidkit_tests::run_cli(env!("CARGO_BIN_EXE_solidkit"), args)
 }
 
 fn json_of(o: &Output) -> Value {

@@ -15,13 +15,10 @@ use solidkit_meshing::io::read_mesh;
 use solidkit_meshing::{IndexedMesh, ReportOptions, TopologyReport};
 use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
-use std::process::{Command, Output};
+use std::process::Output;
 
 fn solidkit(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_solidkit"))
-        .args(args)
-        .output()
-        .expect("run solidkit")
+    solidkit_tests::run_cli(env!("CARGO_BIN_EXE_solidkit"), args)
 }
 
 /// Runs `solidkit gen SUITE -o DIR ARGS…`, expects success, returns the manifest.

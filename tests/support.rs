@@ -5,7 +5,8 @@ use solidkit_kernel::{Solid, json};
 use solidkit_meshing::marching_cubes::GridSpec;
 use solidkit_meshing::octree::{SparseOptions, mesh_sparse};
 use solidkit_meshing::{IndexedMesh, TopologyReport};
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
+use std::process::{Command, Output};
 
 /// Absolute path of a file under `fixtures/`.
 pub fn fixture(rel: &str) -> PathBuf {
@@ -45,4 +46,14 @@ pub fn mesh(solid: &Solid, resolution: usize) -> (IndexedMesh, TopologyReport) {
 /// Relative difference `|a − b| / |b|`.
 pub fn rel_err(a: f64, b: f64) -> f64 {
     (a - b).abs() / b.abs()
+}
+
+/// Runs the `solidkit` binary at `bin` (a test's `env!("CARGO_BIN_EXE_solidkit")`) with `args`.
+pub fn run_cli(bin: &str, args: &[&str]) -> Output {
+    Command::new(bin).args(args).output().expect("run solidkit")
+}
+
+/// A path as `&str` for command lines (test paths are UTF-8).
+pub fn path_str(p: &Path) -> &str {
+    p.to_str().expect("UTF-8 path")
 }
