@@ -10,6 +10,7 @@
 #![warn(missing_docs)]
 
 mod aabb;
+pub mod closest;
 pub mod curve;
 mod error;
 mod field;

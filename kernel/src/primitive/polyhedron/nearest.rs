@@ -95,68 +95,9 @@ impl MeshTree {
     }
 }
 
-/// The point of triangle `abc` nearest to `q`; degenerate (collinear) triangles fall back to their
-/// three edges.
+/// The point of triangle `abc` nearest to `q` (the kernel's shared computation).
 pub(crate) fn closest_point(q: DVec3, a: DVec3, b: DVec3, c: DVec3) -> DVec3 {
-    let p = closest_point_regions(q, a, b, c);
-    if p.is_finite() {
-        p
-    } else {
-        [
-            closest_on_segment(q, a, b),
-            closest_on_segment(q, b, c),
-            closest_on_segment(q, c, a),
-        ]
-        .into_iter()
-        .min_by(|x, y| {
-            (*x - q)
-                .length_squared()
-                .total_cmp(&(*y - q).length_squared())
-        })
-        .unwrap_or(a)
-    }
-}
-
-fn closest_point_regions(q: DVec3, a: DVec3, b: DVec3, c: DVec3) -> DVec3 {
-    let (ab, ac, ap) = (b - a, c - a, q - a);
-    let (d1, d2) = (ab.dot(ap), ac.dot(ap));
-    if d1 <= 0.0 && d2 <= 0.0 {
-        return a;
-    }
-    let bp = q - b;
-    let (d3, d4) = (ab.dot(bp), ac.dot(bp));
-    if d3 >= 0.0 && d4 <= d3 {
-        return b;
-    }
-    let vc = d1 * d4 - d3 * d2;
-    if vc <= 0.0 && d1 >= 0.0 && d3 <= 0.0 {
-        return a + ab * (d1 / (d1 - d3));
-    }
-    let cp = q - c;
-    let (d5, d6) = (ab.dot(cp), ac.dot(cp));
-    if d6 >= 0.0 && d5 <= d6 {
-        return c;
-    }
-    let vb = d5 * d2 - d1 * d6;
-    if vb <= 0.0 && d2 >= 0.0 && d6 <= 0.0 {
-        return a + ac * (d2 / (d2 - d6));
-    }
-    let va = d3 * d6 - d5 * d4;
-    if va <= 0.0 && d4 - d3 >= 0.0 && d5 - d6 >= 0.0 {
-        return b + (c - b) * ((d4 - d3) / ((d4 - d3) + (d5 - d6)));
-    }
-    let denom = 1.0 / (va + vb + vc);
-    a + ab * (vb * denom) + ac * (vc * denom)
-}
-
-fn closest_on_segment(q: DVec3, a: DVec3, b: DVec3) -> DVec3 {
-    let ab = b - a;
-    let len2 = ab.length_squared();
-    if len2 > 0.0 {
-        a + ab * ((q - a).dot(ab) / len2).clamp(0.0, 1.0)
-    } else {
-        a
-    }
+    crate::closest::closest_point_on_triangle(q, [a, b, c])
 }
 
 #[cfg(test)]
