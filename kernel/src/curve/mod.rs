@@ -38,7 +38,7 @@ pub use interpolating::Interpolating;
 pub use measure::arc_length;
 pub use nurbs::Nurbs;
 pub use piece::{BezierPiece, Jet};
-pub(crate) use quadrature::gauss_legendre;
+pub use quadrature::{gauss_legendre, integrate};
 
 use crate::Aabb;
 use glam::DVec3;

@@ -3,7 +3,7 @@
 //! convergent for the smooth rational integrands of nearly straight NURBS spans.
 
 /// Nodes and weights of the `n`-point rule on `[−1, 1]`.
-pub(crate) fn gauss_legendre(n: usize) -> Vec<(f64, f64)> {
+pub fn gauss_legendre(n: usize) -> Vec<(f64, f64)> {
     let mut rule = Vec::with_capacity(n);
     for i in 0..n {
         // Initial guess (Tricomi), then Newton on Pₙ.
@@ -32,7 +32,7 @@ pub(crate) fn gauss_legendre(n: usize) -> Vec<(f64, f64)> {
 }
 
 /// `∫ₐᵇ f` by the rule `rule` (from [`gauss_legendre`]).
-pub(crate) fn integrate(rule: &[(f64, f64)], a: f64, b: f64, mut f: impl FnMut(f64) -> f64) -> f64 {
+pub fn integrate(rule: &[(f64, f64)], a: f64, b: f64, mut f: impl FnMut(f64) -> f64) -> f64 {
     let (mid, half) = (0.5 * (a + b), 0.5 * (b - a));
     rule.iter()
         .map(|&(x, w)| w * f(mid + half * x))

@@ -7,31 +7,7 @@
 use glam::DVec3;
 use std::f64::consts::{PI, TAU};
 
-/// Nodes and weights of the `n`-point Gauss–Legendre rule on `[-1, 1]`, `n ≥ 1` (Newton's method on the
-/// Legendre polynomial from the Chebyshev guesses; accurate to rounding for `n ≤ 100`).
-pub fn gauss_legendre(n: usize) -> Vec<(f64, f64)> {
-    let mut out = Vec::with_capacity(n);
-    for i in 0..n {
-        let mut x = (PI * (i as f64 + 0.75) / (n as f64 + 0.5)).cos();
-        let mut dp = 1.0;
-        for _ in 0..100 {
-            // P_n(x) and P_n'(x) by the three-term recurrence.
-            let (mut p0, mut p1) = (1.0, x);
-            for k in 2..=n {
-                let k = k as f64;
-                (p0, p1) = (p1, ((2.0 * k - 1.0) * x * p1 - (k - 1.0) * p0) / k);
-            }
-            dp = n as f64 * (x * p1 - p0) / (x * x - 1.0);
-            let dx = p1 / dp;
-            x -= dx;
-            if dx.abs() < 1e-16 {
-                break;
-            }
-        }
-        out.push((x, 2.0 / ((1.0 - x * x) * dp * dp)));
-    }
-    out
-}
+pub use solidkit_kernel::curve::gauss_legendre;
 
 /// `∫_a^b f` by `panels` equal panels of the `order`-point Gauss–Legendre rule.
 pub fn integrate(f: impl Fn(f64) -> f64, a: f64, b: f64, panels: usize, order: usize) -> f64 {
@@ -39,12 +15,8 @@ pub fn integrate(f: impl Fn(f64) -> f64, a: f64, b: f64, panels: usize, order: u
     let h = (b - a) / panels as f64;
     (0..panels)
         .map(|k| {
-            let mid = a + h * (k as f64 + 0.5);
-            rule.iter()
-                .map(|&(x, w)| w * f(mid + 0.5 * h * x))
-                .sum::<f64>()
-                * 0.5
-                * h
+            let x0 = a + h * k as f64;
+            solidkit_kernel::curve::integrate(&rule, x0, x0 + h, &f)
         })
         .sum()
 }
