@@ -5,7 +5,7 @@
 use super::block::{Block, BlockScratch, build};
 use super::crossing::DcField;
 use crate::marching_cubes::{GridSpec, SampleGrid, inside, snap_noise};
-use crate::octree::{Cancelled, MeshStats, Progress, SparseOptions};
+use crate::octree::{BoxSamples, Cancelled, MeshStats, Progress, SparseOptions};
 use rayon::prelude::*;
 use solidkit_kernel::Program;
 use solidkit_kernel::program::BatchScratch;
@@ -31,38 +31,27 @@ pub(crate) fn sparse_blocks(
     let mut blocks: Vec<Block> = leaves
         .par_iter()
         .map_init(
-            || (BlockScratch::default(), BatchScratch::default(), Vec::new()),
+            || {
+                (
+                    BlockScratch::default(),
+                    BatchScratch::default(),
+                    BoxSamples::default(),
+                )
+            },
             |(scratch, batch, values), leaf| {
                 if opts.is_cancelled() {
                     return Block::default();
                 }
                 let e = leaf.extent(spec);
                 let n = [e[0] + 1, e[1] + 1, e[2] + 1];
-                let (mut x, mut y, mut z) = (Vec::new(), Vec::new(), Vec::new());
-                for k in 0..n[2] {
-                    let zk = spec.coordinate(2, leaf.min[2] + k);
-                    for j in 0..n[1] {
-                        let yj = spec.coordinate(1, leaf.min[1] + j);
-                        x.extend((0..n[0]).map(|i| spec.coordinate(0, leaf.min[0] + i)));
-                        y.extend(std::iter::repeat_n(yj, n[0]));
-                        z.extend(std::iter::repeat_n(zk, n[0]));
-                    }
-                }
-                values.clear();
-                values.resize(x.len(), 0.0f32);
-                let start = std::time::Instant::now();
-                leaf.program.eval_many(&x, &y, &z, values, batch);
-                for (i, v) in values.iter_mut().enumerate() {
-                    *v = snap_noise(x[i], y[i], z[i], *v);
-                }
-                let sampling = start.elapsed().as_secs_f64();
+                let sampling = values.sample(&leaf.program, spec, leaf.min, n, batch);
                 let mut b = build(
                     leaf.program.as_ref(),
                     spec,
                     leaf.min,
                     e,
                     brick,
-                    values,
+                    &values.values,
                     keep,
                     scratch,
                 );

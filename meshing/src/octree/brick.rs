@@ -11,6 +11,7 @@ use super::subdivide::Node;
 use crate::marching_cubes::table::{case_table, edge_origin};
 use crate::marching_cubes::{GridSpec, edge_vertex, inside, snap_noise};
 use glam::Vec3;
+use solidkit_kernel::Program;
 use solidkit_kernel::program::BatchScratch;
 
 /// Number of distinct local edge ids (14 bits).
@@ -69,42 +70,66 @@ pub(crate) struct BrickTriangles {
 /// Per-thread buffers reused from brick to brick.
 #[derive(Default)]
 pub(crate) struct BrickScratch {
-    x: Vec<f32>,
-    y: Vec<f32>,
-    z: Vec<f32>,
-    values: Vec<f32>,
+    samples: BoxSamples,
     inside: Vec<u8>,
     batch: BatchScratch,
     evaluation_s: f64,
 }
 
-/// Samples the brick's points (x fastest) with its program into `s.values` and `s.inside`.
-fn sample(node: &Node, spec: &GridSpec, n: [usize; 3], s: &mut BrickScratch) {
-    let count = n[0] * n[1] * n[2];
-    for v in [&mut s.x, &mut s.y, &mut s.z] {
-        v.clear();
-    }
-    for k in 0..n[2] {
-        let zk = spec.coordinate(2, node.min[2] + k);
-        for j in 0..n[1] {
-            let yj = spec.coordinate(1, node.min[1] + j);
-            s.x.extend((0..n[0]).map(|i| spec.coordinate(0, node.min[0] + i)));
-            s.y.extend(std::iter::repeat_n(yj, n[0]));
-            s.z.extend(std::iter::repeat_n(zk, n[0]));
+/// The sample points of a box of the grid (x fastest) and the program's values there.
+#[derive(Default)]
+pub(crate) struct BoxSamples {
+    x: Vec<f32>,
+    y: Vec<f32>,
+    z: Vec<f32>,
+    /// Values at the points, single-precision noise snapped to zero.
+    pub values: Vec<f32>,
+}
+
+impl BoxSamples {
+    /// Samples the `n[0] × n[1] × n[2]` grid points from `min` with `program`; returns the
+    /// evaluation time in seconds. The one sampling rule of the sparse MC and DC paths.
+    pub(crate) fn sample(
+        &mut self,
+        program: &Program,
+        spec: &GridSpec,
+        min: [usize; 3],
+        n: [usize; 3],
+        batch: &mut BatchScratch,
+    ) -> f64 {
+        for v in [&mut self.x, &mut self.y, &mut self.z] {
+            v.clear();
         }
+        for k in 0..n[2] {
+            let zk = spec.coordinate(2, min[2] + k);
+            for j in 0..n[1] {
+                let yj = spec.coordinate(1, min[1] + j);
+                self.x
+                    .extend((0..n[0]).map(|i| spec.coordinate(0, min[0] + i)));
+                self.y.extend(std::iter::repeat_n(yj, n[0]));
+                self.z.extend(std::iter::repeat_n(zk, n[0]));
+            }
+        }
+        self.values.clear();
+        self.values.resize(self.x.len(), 0.0);
+        let start = std::time::Instant::now();
+        program.eval_many(&self.x, &self.y, &self.z, &mut self.values, batch);
+        let seconds = start.elapsed().as_secs_f64();
+        for (i, v) in self.values.iter_mut().enumerate() {
+            *v = snap_noise(self.x[i], self.y[i], self.z[i], *v);
+        }
+        seconds
     }
-    s.values.clear();
-    s.values.resize(count, 0.0);
-    let start = std::time::Instant::now();
-    node.program
-        .eval_many(&s.x, &s.y, &s.z, &mut s.values, &mut s.batch);
-    s.evaluation_s = start.elapsed().as_secs_f64();
-    for (i, v) in s.values.iter_mut().enumerate() {
-        *v = snap_noise(s.x[i], s.y[i], s.z[i], *v);
-    }
+}
+
+/// Samples the brick's points (x fastest) with its program into `s.samples.values` and `s.inside`.
+fn sample(node: &Node, spec: &GridSpec, n: [usize; 3], s: &mut BrickScratch) {
+    s.evaluation_s = s
+        .samples
+        .sample(&node.program, spec, node.min, n, &mut s.batch);
     s.inside.clear();
     s.inside
-        .extend(s.values.iter().map(|&v| u8::from(inside(v))));
+        .extend(s.samples.values.iter().map(|&v| u8::from(inside(v))));
 }
 
 pub(crate) fn process(
@@ -152,9 +177,9 @@ pub(crate) fn process(
                     ];
                     let q = edge_vertex(
                         point(i, j, k),
-                        s.values[idx],
+                        s.samples.values[idx],
                         point(i + o[0], j + o[1], k + o[2]),
-                        s.values[idx + step],
+                        s.samples.values[idx + step],
                     )
                     .expect("sign change");
                     out.edges.push(((i << 2 | axis) as u16, q.as_vec3()));
@@ -195,7 +220,7 @@ pub(crate) fn process(
     BrickOutput {
         edges,
         triangles: out,
-        samples: s.values.len() as u64,
+        samples: s.samples.values.len() as u64,
         evaluation_s: s.evaluation_s,
     }
 }

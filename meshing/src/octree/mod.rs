@@ -15,8 +15,9 @@ mod brick;
 mod control;
 mod subdivide;
 
-pub use control::{CancelToken, Cancelled, MeshStats, Progress, SparseOptions};
 /// The surface leaf bricks with their pruned programs (also used by dual contouring).
+pub(crate) use brick::BoxSamples;
+pub use control::{CancelToken, Cancelled, MeshStats, Progress, SparseOptions};
 pub(crate) use subdivide::surface_bricks as surface_nodes;
 
 use crate::IndexedMesh;
