@@ -2,12 +2,13 @@
 //! construction: each grid edge that changes sign gets exactly one vertex, numbered by the slice
 //! that owns the edge, and every cell using that edge refers to the same number.
 //!
-//! Sign rule: a sample is inside when its value is `< 0`; zero (and NaN) count as outside. Vertex
+//! Sign rule: a sample is inside when its value is `< 0`; zero (and NaN) count as outside; an
+//! ambiguous face is resolved by the asymptotic decider on its four values. Vertex
 //! positions interpolate linearly along the edge, kept at least [`EDGE_MARGIN`] of the edge away
 //! from either end, so no two vertices coincide and no triangle is degenerate.
 
 use super::grid::SampleGrid;
-use super::table::{case_table, edge_origin};
+use super::table::{CENTRE, NO_CENTRE, case_table, cell_config, edge_origin};
 use crate::sink::MeshSink;
 use glam::DVec3;
 use rayon::prelude::*;
@@ -103,17 +104,30 @@ fn slice_vertices(g: &SampleGrid, k: usize) -> SliceVertices {
     SliceVertices { ids, positions }
 }
 
-/// Triangles of cell layer `k` (between slices `k` and `k + 1`) in global vertex numbers.
+/// The centre vertex of a loop fanned from the centroid of its crossings `positions` (in loop
+/// order), rounded to single precision like every vertex. Shared by the dense and sparse paths.
+pub fn loop_centre(positions: impl ExactSizeIterator<Item = DVec3>) -> DVec3 {
+    let n = positions.len() as f64;
+    let sum = positions.fold(DVec3::ZERO, |a, p| a + p);
+    (sum / n).as_vec3().as_dvec3()
+}
+
+/// Marks a triangle corner as the layer's `n`-th centre vertex.
+const CENTRE_FLAG: u32 = 1 << 31;
+
+/// Triangles of cell layer `k` (between slices `k` and `k + 1`) in global vertex numbers, centre
+/// vertices as `CENTRE_FLAG | n` with their positions in the second list.
 fn layer_triangles(
     g: &SampleGrid,
     k: usize,
     slices: &[SliceVertices],
     offsets: &[u32],
-) -> Vec<[u32; 3]> {
+) -> (Vec<[u32; 3]>, Vec<DVec3>) {
     let table = case_table();
     let [cx, cy, _] = g.spec.cells;
     let sx = cx + 1;
     let mut out = Vec::new();
+    let mut centres = Vec::new();
     for j in 0..cy {
         for i in 0..cx {
             let mut mask = 0usize;
@@ -123,18 +137,37 @@ fn layer_triangles(
                     mask |= 1 << c;
                 }
             }
-            for tri in &table.cases[mask] {
+            let config = cell_config(mask, |c| {
+                let c = usize::from(c);
+                g.at(i + (c & 1), j + (c >> 1 & 1), k + (c >> 2 & 1))
+            });
+            let vertex = |e: u8| {
+                let (axis, o) = edge_origin(e);
+                let slice = k + o[2];
+                let local = slices[slice].ids[axis][(i + o[0]) + sx * (j + o[1])];
+                debug_assert_ne!(local, NONE, "case table uses only crossing edges");
+                (slice, local)
+            };
+            let centre = table.centre_loop[config];
+            if centre != NO_CENTRE {
+                let l = &table.loops[config][centre as usize];
+                centres.push(loop_centre(l.iter().map(|&e| {
+                    let (slice, local) = vertex(e);
+                    slices[slice].positions[local as usize]
+                })));
+            }
+            for tri in &table.cases[config] {
                 out.push(tri.map(|e| {
-                    let (axis, o) = edge_origin(e);
-                    let slice = k + o[2];
-                    let local = slices[slice].ids[axis][(i + o[0]) + sx * (j + o[1])];
-                    debug_assert_ne!(local, NONE, "case table uses only crossing edges");
+                    if e == CENTRE {
+                        return CENTRE_FLAG | (centres.len() - 1) as u32;
+                    }
+                    let (slice, local) = vertex(e);
                     offsets[slice] + local
                 }));
             }
         }
     }
-    out
+    (out, centres)
 }
 
 /// Polygonizes the zero level set of the samples into `sink`. Deterministic: the output does not
@@ -151,17 +184,32 @@ pub fn polygonize_into(g: &SampleGrid, sink: &mut impl MeshSink) {
         offsets.push(total);
         total += s.positions.len() as u32;
     }
-    let layers: Vec<Vec<[u32; 3]>> = (0..g.spec.cells[2])
+    let layers: Vec<(Vec<[u32; 3]>, Vec<DVec3>)> = (0..g.spec.cells[2])
         .into_par_iter()
         .map(|k| layer_triangles(g, k, &slices, &offsets))
         .collect();
-    let triangles: usize = layers.iter().map(Vec::len).sum();
-    sink.reserve(total as usize, triangles);
-    let mut ids = Vec::with_capacity(total as usize);
+    let triangles: usize = layers.iter().map(|l| l.0.len()).sum();
+    let centres: usize = layers.iter().map(|l| l.1.len()).sum();
+    sink.reserve(total as usize + centres, triangles);
+    let mut ids = Vec::with_capacity(total as usize + centres);
     for s in &slices {
         ids.extend(s.positions.iter().map(|&p| sink.add_vertex(p)));
     }
-    for t in layers.iter().flatten() {
-        sink.add_triangle(t.map(|v| ids[v as usize]));
+    // Centre vertices after every edge vertex, in cell order.
+    let mut centre_base = Vec::with_capacity(layers.len());
+    for (_, c) in &layers {
+        centre_base.push(ids.len() as u32);
+        ids.extend(c.iter().map(|&p| sink.add_vertex(p)));
+    }
+    for ((tris, _), &base) in layers.iter().zip(&centre_base) {
+        for t in tris {
+            sink.add_triangle(t.map(|v| {
+                if v & CENTRE_FLAG != 0 {
+                    ids[(base + (v & !CENTRE_FLAG)) as usize]
+                } else {
+                    ids[v as usize]
+                }
+            }));
+        }
     }
 }

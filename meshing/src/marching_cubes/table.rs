@@ -12,21 +12,48 @@
 //! on the other, so the segments chain into closed loops. Loop direction makes triangles
 //! counter-clockwise seen from outside the solid (normals point towards positive values).
 //!
+//! Ambiguous faces are resolved by the asymptotic decider ([`face_joined`]): when the saddle of
+//! the face's bilinear interpolant is inside, the two inside corners are *joined* and the segments
+//! cut off the two outside corners instead. The decision reads only the face's four values, so
+//! both cells sharing the face make it alike and the surface stays closed. This is what keeps a
+//! sharp tip whose neighbouring samples lie exactly on the surface (exact zeros, counted as
+//! outside) attached to its body instead of sealed off as a cell-sized bubble. A cell's
+//! configuration is its sign mask plus one joined bit per ambiguous face ([`config`]).
+//!
 //! Each loop is triangulated so that no diagonal joins two vertices on the same cell face: such a
 //! chord could be drawn by the neighbouring cell too, and the edge would then have four triangles.
 //! With that constraint every diagonal is interior to its cell and the output is a 2-manifold.
+//! Some loops through joined faces wind around the cell and have no such triangulation (the
+//! tunnel cases of Chernyaev's marching cubes 33); they are fanned from one extra vertex at the
+//! centroid of their crossings ([`CENTRE`]). A configuration has at most one such loop: it has at
+//! least eight crossings, and a cell has twelve edges.
 
 use std::sync::LazyLock;
 
 /// Triangles of one case, as triples of cell edge numbers.
 pub type CaseTriangles = Vec<[u8; 3]>;
 
-/// The 256 cases, indexed by the bit mask of inside corners.
+/// Number of cell configurations: 256 sign masks times 64 joined-face sets.
+pub const CONFIGS: usize = 256 * 64;
+
+/// The corner number, in [`CaseTable::cases`], of the centre vertex of a loop fanned from its
+/// centroid (see [`CaseTable::centre_loop`]).
+pub const CENTRE: u8 = 12;
+
+/// No loop of the configuration needs a centre vertex.
+pub const NO_CENTRE: u8 = u8::MAX;
+
+/// The case table, indexed by configuration ([`config`]).
 pub struct CaseTable {
-    /// `cases[mask]`: triangles for that mask.
+    /// `cases[config]`: triangles for that configuration, as cell edge numbers or [`CENTRE`].
     pub cases: Vec<CaseTriangles>,
-    /// `loops[mask]`: the edge loops the triangles were made from.
+    /// `loops[config]`: the edge loops the triangles were made from.
     pub loops: Vec<Vec<Vec<u8>>>,
+    /// `centre_loop[config]`: the loop fanned from the centroid of its crossings (whose position
+    /// is the vertex [`CENTRE`]), or [`NO_CENTRE`].
+    pub centre_loop: Vec<u8>,
+    /// `ambiguous[mask]`: bit `2·axis + side` set when that face has diagonal inside corners.
+    pub ambiguous: [u8; 256],
 }
 
 static TABLE: LazyLock<CaseTable> = LazyLock::new(build);
@@ -35,6 +62,65 @@ static TABLE: LazyLock<CaseTable> = LazyLock::new(build);
 pub fn case_table() -> &'static CaseTable {
     &TABLE
 }
+
+/// The configuration of a cell with inside-corner `mask` whose ambiguous faces in `joined` (bit
+/// `2·axis + side`) join their inside corners; bits of faces that are not ambiguous are ignored.
+#[inline]
+pub fn config(mask: usize, joined: u8) -> usize {
+    mask | usize::from(joined & case_table().ambiguous[mask]) << 8
+}
+
+/// The asymptotic decider on an ambiguous face: `true` when the saddle of the bilinear
+/// interpolant of corner values `a`, `c` (one diagonal, inside: `< 0`) and `b`, `d` (the other,
+/// outside: `≥ 0`) is inside, i.e. `a·c > b·d`. The products are exact in double precision and a
+/// tie (saddle exactly on the surface) keeps the corners apart.
+#[inline]
+pub fn face_joined(a: f32, c: f32, b: f32, d: f32) -> bool {
+    f64::from(a) * f64::from(c) > f64::from(b) * f64::from(d)
+}
+
+/// The configuration of a cell from its eight corner values (corner `c` at [`corner_offset`]),
+/// with the sign `mask` already computed from them.
+#[inline]
+pub fn cell_config(mask: usize, value: impl Fn(u8) -> f32) -> usize {
+    let t = case_table();
+    let amb = t.ambiguous[mask];
+    if amb == 0 {
+        return mask;
+    }
+    let mut joined = 0u8;
+    for (bit, f) in FACES.iter().enumerate() {
+        if amb >> bit & 1 == 1 {
+            // The face's corners in walk order; its inside diagonal is the one holding f[0] when
+            // f[0] is inside, else the other.
+            let v = f.map(&value);
+            let (a, c, b, d) = if mask >> f[0] & 1 == 1 {
+                (v[0], v[2], v[1], v[3])
+            } else {
+                (v[1], v[3], v[0], v[2])
+            };
+            if face_joined(a, c, b, d) {
+                joined |= 1 << bit;
+            }
+        }
+    }
+    mask | usize::from(joined) << 8
+}
+
+/// The six faces' corners in walk order, face `2·axis + side`.
+const FACES: [[u8; 4]; 6] = {
+    let mut out = [[0u8; 4]; 6];
+    let mut axis = 0;
+    while axis < 3 {
+        let mut side = 0;
+        while side < 2 {
+            out[2 * axis + side] = face_corners_const(axis, side as u8);
+            side += 1;
+        }
+        axis += 1;
+    }
+    out
+};
 
 /// Unit offset of corner `c`.
 pub fn corner_offset(c: u8) -> [usize; 3] {
@@ -76,9 +162,13 @@ fn edge_between(a: u8, b: u8) -> u8 {
 
 /// The four corners of face (`axis`, `side`) in counter-clockwise order seen from outside.
 pub fn face_corners(axis: usize, side: u8) -> [u8; 4] {
+    face_corners_const(axis, side)
+}
+
+const fn face_corners_const(axis: usize, side: u8) -> [u8; 4] {
     let (u, v) = ((axis + 1) % 3, (axis + 2) % 3);
-    let at = |du: u8, dv: u8| (side << axis) | (du << u) | (dv << v);
-    let ccw = [at(0, 0), at(1, 0), at(1, 1), at(0, 1)];
+    let base = side << axis;
+    let ccw = [base, base | 1 << u, base | 1 << u | 1 << v, base | 1 << v];
     if side == 1 {
         ccw
     } else {
@@ -86,37 +176,77 @@ pub fn face_corners(axis: usize, side: u8) -> [u8; 4] {
     }
 }
 
-fn build() -> CaseTable {
-    let mut cases = Vec::with_capacity(256);
-    let mut loops = Vec::with_capacity(256);
-    for mask in 0..=255u8 {
-        let l = case_loops(mask);
-        cases.push(fan(&l));
-        loops.push(l);
-    }
-    CaseTable { cases, loops }
+/// True when face `f` (corners in walk order) has its inside corners on a diagonal.
+fn is_ambiguous(mask: u8, f: [u8; 4]) -> bool {
+    let inside = |c: u8| mask >> c & 1 == 1;
+    inside(f[0]) == inside(f[2]) && inside(f[1]) == inside(f[3]) && inside(f[0]) != inside(f[1])
 }
 
-/// The closed edge loops of one case, by the face rule.
-fn case_loops(mask: u8) -> Vec<Vec<u8>> {
+fn build() -> CaseTable {
+    let mut ambiguous = [0u8; 256];
+    for (mask, amb) in ambiguous.iter_mut().enumerate() {
+        for (bit, &f) in FACES.iter().enumerate() {
+            if is_ambiguous(mask as u8, f) {
+                *amb |= 1 << bit;
+            }
+        }
+    }
+    let mut cases = vec![CaseTriangles::new(); CONFIGS];
+    let mut loops = vec![Vec::new(); CONFIGS];
+    let mut centre_loop = vec![NO_CENTRE; CONFIGS];
+    // Distinct configurations first (joined ⊆ ambiguous), then the rest copied from them.
+    for mask in 0..256usize {
+        let amb = ambiguous[mask];
+        for joined in 0..64u8 {
+            if joined & !amb == 0 {
+                let l = case_loops(mask as u8, joined);
+                let i = mask | usize::from(joined) << 8;
+                (cases[i], centre_loop[i]) = fan(&l);
+                loops[i] = l;
+            }
+        }
+    }
+    for i in 0..CONFIGS {
+        let (mask, joined) = (i & 255, (i >> 8) as u8);
+        let canonical = mask | usize::from(joined & ambiguous[mask]) << 8;
+        if canonical != i {
+            cases[i] = cases[canonical].clone();
+            loops[i] = loops[canonical].clone();
+            centre_loop[i] = centre_loop[canonical];
+        }
+    }
+    CaseTable {
+        cases,
+        loops,
+        centre_loop,
+        ambiguous,
+    }
+}
+
+/// The closed edge loops of one configuration, by the face rule: each run of inside corners is
+/// cut off, except on ambiguous faces in `joined`, whose two outside corners are cut off.
+fn case_loops(mask: u8, joined: u8) -> Vec<Vec<u8>> {
     let inside = |c: u8| mask >> c & 1 == 1;
     let mut next = [u8::MAX; 12];
-    for axis in 0..3 {
-        for side in 0..2 {
-            let f = face_corners(axis, side);
-            for i in 0..4 {
-                let (a, b) = (f[i], f[(i + 1) % 4]);
-                if inside(a) || !inside(b) {
-                    continue;
-                }
-                // The walk enters a run of inside corners at edge (a, b); find where it leaves.
+    for (bit, &f) in FACES.iter().enumerate() {
+        let join = joined >> bit & 1 == 1 && is_ambiguous(mask, f);
+        for i in 0..4 {
+            let (a, b) = (f[i], f[(i + 1) % 4]);
+            if inside(a) || !inside(b) {
+                continue;
+            }
+            // The walk enters a run of inside corners at edge (a, b); find where it leaves. On a
+            // joined face the run continues across the saddle to the opposite inside corner.
+            let exit = if join {
+                edge_between(f[(i + 3) % 4], a)
+            } else {
                 let mut j = (i + 1) % 4;
                 while inside(f[(j + 1) % 4]) {
                     j = (j + 1) % 4;
                 }
-                let exit = edge_between(f[j], f[(j + 1) % 4]);
-                next[edge_between(a, b) as usize] = exit;
-            }
+                edge_between(f[j], f[(j + 1) % 4])
+            };
+            next[edge_between(a, b) as usize] = exit;
         }
     }
     let mut seen = [false; 12];
@@ -138,8 +268,11 @@ fn case_loops(mask: u8) -> Vec<Vec<u8>> {
     out
 }
 
-/// True when edges `a` and `b` lie on a common face of the cell.
+/// True when edges `a` and `b` lie on a common face of the cell ([`CENTRE`] lies on none).
 fn share_face(a: u8, b: u8) -> bool {
+    if a == CENTRE || b == CENTRE {
+        return false;
+    }
     (0..3).any(|axis| {
         (0..2).any(|side| {
             let f = face_corners(axis, side);
@@ -152,12 +285,21 @@ fn share_face(a: u8, b: u8) -> bool {
     })
 }
 
-fn fan(loops: &[Vec<u8>]) -> CaseTriangles {
+/// The triangles of a configuration's loops and the loop fanned from a centre vertex, if any.
+fn fan(loops: &[Vec<u8>]) -> (CaseTriangles, u8) {
     let mut tris = Vec::new();
-    for l in loops {
-        tris.extend(triangulate_loop(l).expect("every loop has a face-free triangulation"));
+    let mut centre = NO_CENTRE;
+    for (n, l) in loops.iter().enumerate() {
+        match triangulate_loop(l) {
+            Some(t) => tris.extend(t),
+            None => {
+                debug_assert_eq!(centre, NO_CENTRE, "at most one centre loop");
+                centre = n as u8;
+                tris.extend((0..l.len()).map(|i| [l[i], l[(i + 1) % l.len()], CENTRE]));
+            }
+        }
     }
-    tris
+    (tris, centre)
 }
 
 /// A triangulation of the polygon `l` none of whose diagonals joins two edges on a common cell
@@ -199,25 +341,50 @@ fn triangulate_loop(l: &[u8]) -> Option<CaseTriangles> {
 mod tests {
     use super::*;
 
+    /// Every distinct configuration: each mask with each subset of its ambiguous faces joined.
+    fn configs() -> impl Iterator<Item = usize> {
+        (0..256usize).flat_map(|mask| {
+            let amb = case_table().ambiguous[mask];
+            (0..64u8)
+                .filter(move |j| j & !amb == 0)
+                .map(move |j| mask | usize::from(j) << 8)
+        })
+    }
+
+    /// No diagonal lies on a cell face; centre vertices occur only in configurations with joined
+    /// faces, fan loops of at least eight crossings, and are used by no other loop.
     #[test]
     fn no_diagonal_lies_on_a_cell_face() {
         let t = case_table();
-        for mask in 0..256 {
-            let sides: Vec<(u8, u8)> = t.loops[mask]
+        let mut centres = 0;
+        for config in configs() {
+            let sides: Vec<(u8, u8)> = t.loops[config]
                 .iter()
                 .flat_map(|l| (0..l.len()).map(move |k| (l[k], l[(k + 1) % l.len()])))
                 .collect();
-            for tri in &t.cases[mask] {
+            for tri in &t.cases[config] {
                 for k in 0..3 {
                     let (a, b) = (tri[k], tri[(k + 1) % 3]);
                     let side = sides.contains(&(a, b)) || sides.contains(&(b, a));
                     assert!(
                         side || !share_face(a, b),
-                        "mask {mask}: chord {a}-{b} on a face"
+                        "config {config:#x}: chord {a}-{b}"
                     );
                 }
             }
+            let with_centre = t.cases[config].iter().filter(|tri| tri.contains(&CENTRE));
+            let c = t.centre_loop[config];
+            if c == NO_CENTRE {
+                assert_eq!(with_centre.count(), 0);
+            } else {
+                centres += 1;
+                assert_ne!(config >> 8, 0, "config {config:#x}");
+                let l = &t.loops[config][c as usize];
+                assert!(l.len() >= 8);
+                assert_eq!(with_centre.count(), l.len());
+            }
         }
+        assert!(centres > 0);
     }
 
     #[test]
@@ -254,19 +421,23 @@ mod tests {
     #[test]
     fn every_case_uses_each_crossing_edge_once() {
         let t = case_table();
-        for mask in 0..=255u8 {
+        for config in configs() {
+            let mask = (config & 255) as u8;
             let crossing: Vec<u8> = (0..12u8)
                 .filter(|&e| {
                     let (a, b) = edge_corners(e);
                     (mask >> a & 1) != (mask >> b & 1)
                 })
                 .collect();
-            let mut used: Vec<u8> = t.loops[mask as usize].iter().flatten().copied().collect();
+            let mut used: Vec<u8> = t.loops[config].iter().flatten().copied().collect();
             used.sort();
-            assert_eq!(used, crossing, "mask {mask:#010b}");
-            let expected: usize = t.loops[mask as usize].iter().map(|l| l.len() - 2).sum();
-            assert_eq!(t.cases[mask as usize].len(), expected);
-            assert!(t.loops[mask as usize].iter().all(|l| l.len() >= 3));
+            assert_eq!(used, crossing, "config {config:#x}");
+            let centre = t.centre_loop[config] as usize;
+            let expected: usize = (t.loops[config].iter().enumerate())
+                .map(|(n, l)| if n == centre { l.len() } else { l.len() - 2 })
+                .sum();
+            assert_eq!(t.cases[config].len(), expected);
+            assert!(t.loops[config].iter().all(|l| l.len() >= 3));
         }
         assert!(t.cases[0].is_empty() && t.cases[255].is_empty());
     }
@@ -276,7 +447,7 @@ mod tests {
     #[test]
     fn every_case_is_an_oriented_surface_with_loop_boundaries() {
         let t = case_table();
-        for mask in 0..=255usize {
+        for mask in configs() {
             let mut directed: Vec<(u8, u8)> = Vec::new();
             for tri in &t.cases[mask] {
                 for k in 0..3 {
@@ -298,5 +469,123 @@ mod tests {
                 }
             }
         }
+    }
+
+    /// Flipping every sign and every ambiguous face's decision gives the same loops reversed: the
+    /// joined rule is the separating rule seen from the other side.
+    #[test]
+    fn complement_reverses_loops() {
+        let t = case_table();
+        let canonical = |loops: &[Vec<u8>]| {
+            let mut out: Vec<Vec<u8>> = loops
+                .iter()
+                .map(|l| {
+                    let k = (0..l.len()).min_by_key(|&k| l[k]).unwrap();
+                    (0..l.len()).map(|i| l[(k + i) % l.len()]).collect()
+                })
+                .collect();
+            out.sort();
+            out
+        };
+        for config in configs() {
+            let (mask, joined) = (config & 255, (config >> 8) as u8);
+            let flipped = config_of(255 - mask, t.ambiguous[mask] ^ joined);
+            let reversed: Vec<Vec<u8>> = t.loops[flipped]
+                .iter()
+                .map(|l| l.iter().rev().copied().collect())
+                .collect();
+            assert_eq!(
+                canonical(&t.loops[config]),
+                canonical(&reversed),
+                "config {config:#x}"
+            );
+        }
+    }
+
+    fn config_of(mask: usize, joined: u8) -> usize {
+        config(mask, joined)
+    }
+
+    /// On every face, each loop segment cuts off one corner run: inside runs, except on a joined
+    /// ambiguous face, where it cuts off an outside corner.
+    #[test]
+    fn segments_cut_off_the_decided_corners() {
+        let t = case_table();
+        for config in configs() {
+            let (mask, joined) = ((config & 255) as u8, (config >> 8) as u8);
+            let segments: Vec<(u8, u8)> = t.loops[config]
+                .iter()
+                .flat_map(|l| (0..l.len()).map(move |k| (l[k], l[(k + 1) % l.len()])))
+                .collect();
+            for (bit, &f) in FACES.iter().enumerate() {
+                if !is_ambiguous(mask, f) {
+                    continue;
+                }
+                let cut_inside = joined >> bit & 1 == 0;
+                for i in 0..4 {
+                    let corner = f[i];
+                    if (mask >> corner & 1 == 1) != cut_inside {
+                        continue;
+                    }
+                    let e1 = edge_between(f[(i + 3) % 4], corner);
+                    let e2 = edge_between(corner, f[(i + 1) % 4]);
+                    assert!(
+                        segments.contains(&(e1, e2)) || segments.contains(&(e2, e1)),
+                        "config {config:#x}: face {bit} corner {corner} not cut off"
+                    );
+                }
+            }
+        }
+    }
+
+    /// The decider agrees with the sign of the bilinear interpolant at its saddle, found by brute
+    /// force on a fine grid of the face, for random ambiguous faces.
+    #[test]
+    fn decider_matches_the_bilinear_saddle() {
+        let mut state = 0x2545_f491_4f6c_dd1du64;
+        let mut next = || {
+            state ^= state << 13;
+            state ^= state >> 7;
+            state ^= state << 17;
+            (state >> 40) as f32 / (1u64 << 24) as f32
+        };
+        let mut checked = 0;
+        for _ in 0..2000 {
+            let (a, c) = (-next() - 0.01, -next() - 0.01);
+            let (b, d) = (next() + 0.01, next() + 0.01);
+            // f(u, v) with a at (0,0), b at (1,0), c at (1,1), d at (0,1).
+            let den = f64::from(a) + f64::from(c) - f64::from(b) - f64::from(d);
+            let saddle = (f64::from(a) * f64::from(c) - f64::from(b) * f64::from(d)) / den;
+            if saddle.abs() < 1e-3 {
+                continue;
+            }
+            // Inside corners joined exactly when a path of negative values links them: the
+            // minimum over paths of the maximum is the saddle value.
+            assert_eq!(face_joined(a, c, b, d), saddle < 0.0, "{a} {b} {c} {d}");
+            checked += 1;
+        }
+        assert!(checked > 1000);
+        // Exact zeros on the outside diagonal always join; a tie keeps the corners apart.
+        assert!(face_joined(-1e-30, -1e-30, 0.0, 0.0));
+        assert!(!face_joined(-1.0, -1.0, 1.0, 1.0));
+    }
+
+    /// A tip sample whose three face neighbours lie exactly on the surface joins the rest of the
+    /// cell: three small loops around those corners, not one around the tip.
+    #[test]
+    fn tip_with_zero_neighbours_stays_attached() {
+        let values = [-0.1f32, 0.0, 0.0, -0.2, 0.0, -0.2, -0.2, -0.3];
+        let mask = (0..8)
+            .filter(|&c| values[c] < 0.0)
+            .fold(0, |m, c| m | 1 << c);
+        let config = cell_config(mask, |c| values[c as usize]);
+        let loops = &case_table().loops[config];
+        assert_eq!(loops.len(), 3);
+        assert!(loops.iter().all(|l| l.len() == 3));
+        assert_eq!(
+            case_table().loops[mask].len(),
+            2,
+            "the separating rule seals the tip off"
+        );
     }
 }

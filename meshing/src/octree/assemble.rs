@@ -1,9 +1,11 @@
 //! Merging brick outputs into one mesh numbered exactly as the dense path numbers it, with linear
-//! walks instead of sorts: vertices by grid row `(k, j)` then `(i, axis)`, triangles by cell row
-//! then `i` and case order. Each grid row is covered by the bricks of one brick row, visited in
+//! walks instead of sorts: vertices by grid row `(k, j)` then `(i, axis)`, then the centre
+//! vertices of fanned loops by cell row, triangles by cell row then `i` and case order. Each grid row is covered by the bricks of one brick row, visited in
 //! `x` order, so concatenating their row segments gives the dense order.
 
-use super::brick::{BrickEdges, BrickTriangles, LOCAL_EDGE_IDS, local_edge, local_parts};
+use super::brick::{
+    BrickEdges, BrickTriangles, CENTRE_IDS, LOCAL_EDGE_IDS, local_edge, local_parts,
+};
 use crate::sink::MeshSink;
 use rayon::prelude::*;
 use std::collections::HashMap;
@@ -89,9 +91,28 @@ pub(crate) fn assemble(
             }
         }
     }
+    let edge_vertices = count;
+    // Centre vertices follow, by cell row.
+    let mut centre_bases: Vec<Vec<u32>> = triangles
+        .iter()
+        .map(|t| vec![0; t.centre_rows.len()])
+        .collect();
+    for k in 0..cells[2] {
+        let (bk, kl) = (k / brick, k % brick);
+        for j in 0..cells[1] {
+            let (bj, jl) = (j / brick, j % brick);
+            for &b in rows.get(&(bk, bj)).map_or(no_bricks, Vec::as_slice) {
+                let t = &triangles[b];
+                let r = kl * bricks[b].extent[1] + jl;
+                centre_bases[b][r] = count;
+                count += t.centre_rows[r + 1] - t.centre_rows[r];
+            }
+        }
+    }
     // Triangle corners to vertex numbers, brick by brick in parallel, consuming the local lists.
     // A per-thread table maps the brick's own edge ids to numbers; neighbours are searched.
-    let resolved: Vec<(Vec<[u32; 3]>, Vec<u32>)> = triangles
+    type Resolved = (Vec<[u32; 3]>, Vec<u32>, Vec<glam::Vec3>, Vec<u32>);
+    let resolved: Vec<Resolved> = triangles
         .into_par_iter()
         .enumerate()
         .map_init(
@@ -110,11 +131,15 @@ pub(crate) fn assemble(
                         own[id as usize] = base + p as u32;
                     }
                 }
-                let tris = t
-                    .triangles
-                    .iter()
-                    .map(|tri| {
+                let mut tris = Vec::with_capacity(t.triangles.len());
+                for r in 0..t.triangle_rows.len() - 1 {
+                    let span = t.triangle_rows[r] as usize..t.triangle_rows[r + 1] as usize;
+                    let centre = centre_bases[b][r].wrapping_sub(t.centre_rows[r]);
+                    tris.extend(t.triangles[span].iter().map(|tri| {
                         tri.map(|id| {
+                            if id >= CENTRE_IDS {
+                                return centre.wrapping_add(u32::from(id - CENTRE_IDS));
+                            }
                             let (l, _) = local_parts(id);
                             if l[0] < o.owned[0] && l[1] < o.owned[1] && l[2] < o.owned[2] {
                                 own[id as usize]
@@ -122,9 +147,9 @@ pub(crate) fn assemble(
                                 neighbour_vertex(b, id, &bricks, &bases, &index, brick, dims)
                             }
                         })
-                    })
-                    .collect();
-                (tris, t.triangle_rows)
+                    }));
+                }
+                (tris, t.triangle_rows, t.centres, t.centre_rows)
             },
         )
         .collect();
@@ -139,6 +164,7 @@ pub(crate) fn assemble(
                 .map(|e| sink.add_vertex(e.1.as_dvec3())),
         );
     }
+    debug_assert_eq!(ids.len(), edge_vertices as usize);
     let extents: Vec<[usize; 3]> = bricks.iter().map(|o| o.extent).collect();
     drop((bricks, bases, order, index));
     for k in 0..cells[2] {
@@ -146,7 +172,19 @@ pub(crate) fn assemble(
         for j in 0..cells[1] {
             let (bj, jl) = (j / brick, j % brick);
             for &b in rows.get(&(bk, bj)).map_or(no_bricks, Vec::as_slice) {
-                let (tris, tri_rows) = &resolved[b];
+                let (_, _, centres, centre_rows) = &resolved[b];
+                let r = kl * extents[b][1] + jl;
+                let span = centre_rows[r] as usize..centre_rows[r + 1] as usize;
+                ids.extend(centres[span].iter().map(|p| sink.add_vertex(p.as_dvec3())));
+            }
+        }
+    }
+    for k in 0..cells[2] {
+        let (bk, kl) = (k / brick, k % brick);
+        for j in 0..cells[1] {
+            let (bj, jl) = (j / brick, j % brick);
+            for &b in rows.get(&(bk, bj)).map_or(no_bricks, Vec::as_slice) {
+                let (tris, tri_rows, _, _) = &resolved[b];
                 let r = kl * extents[b][1] + jl;
                 for t in &tris[tri_rows[r] as usize..tri_rows[r + 1] as usize] {
                     sink.add_triangle(t.map(|v| ids[v as usize]));

@@ -8,7 +8,8 @@
 //! the ones owned by a neighbour.
 
 use super::subdivide::Node;
-use crate::marching_cubes::table::{case_table, edge_origin};
+use crate::marching_cubes::polygonize::loop_centre;
+use crate::marching_cubes::table::{CENTRE, NO_CENTRE, case_table, cell_config, edge_origin};
 use crate::marching_cubes::{GridSpec, edge_vertex, inside, snap_noise};
 use glam::Vec3;
 use solidkit_kernel::Program;
@@ -16,6 +17,10 @@ use solidkit_kernel::program::BatchScratch;
 
 /// Number of distinct local edge ids (14 bits).
 pub(crate) const LOCAL_EDGE_IDS: usize = 1 << 14;
+
+/// Triangle corners from this id up are the brick's centre vertices (`id − CENTRE_IDS`-th in
+/// [`BrickTriangles::centres`]); a brick has at most one per cell, far fewer than 2¹⁴.
+pub(crate) const CENTRE_IDS: u16 = LOCAL_EDGE_IDS as u16;
 
 /// Brick-local id of the edge along `axis` from local sample `(i, j, k)` (each in `0..=8`).
 #[inline]
@@ -61,10 +66,15 @@ pub(crate) struct BrickEdges {
 /// A brick's triangles, row by row.
 #[derive(Debug, Default)]
 pub(crate) struct BrickTriangles {
-    /// Triangles as brick-local corner edge ids, in cell order (`k`, `j`, `i`) then case order.
+    /// Triangles as brick-local corner edge ids, in cell order (`k`, `j`, `i`) then case order;
+    /// ids from [`CENTRE_IDS`] up are centre vertices.
     pub triangles: Vec<[u16; 3]>,
     /// Start of each cell row `(k, j)` in `triangles` (`extent[2] · extent[1] + 1` entries).
     pub triangle_rows: Vec<u32>,
+    /// Centre vertices of loops fanned from their centroid, in cell order.
+    pub centres: Vec<Vec3>,
+    /// Start of each cell row `(k, j)` in `centres`.
+    pub centre_rows: Vec<u32>,
 }
 
 /// Per-thread buffers reused from brick to brick.
@@ -195,6 +205,7 @@ pub(crate) fn process(
     let corner = [0, 1, nx, nx + 1, nxy, nxy + 1, nxy + nx, nxy + nx + 1];
     out.triangle_rows.reserve(e[2] * e[1] + 1);
     out.triangle_rows.push(0);
+    out.centre_rows.push(0);
     for k in 0..e[2] {
         for j in 0..e[1] {
             for i in 0..e[0] {
@@ -206,14 +217,38 @@ pub(crate) fn process(
                 if mask == 0 || mask == 255 {
                     continue;
                 }
-                for tri in &table.cases[mask] {
+                let config = cell_config(mask, |c| s.samples.values[base + corner[c as usize]]);
+                let centre = table.centre_loop[config];
+                if centre != NO_CENTRE {
+                    let l = &table.loops[config][centre as usize];
+                    let c = loop_centre(l.iter().map(|&edge| {
+                        let (axis, o) = edge_origin(edge);
+                        let p = [i + o[0], j + o[1], k + o[2]];
+                        let mut q = p;
+                        q[axis] += 1;
+                        let at = |p: [usize; 3]| p[0] + nx * p[1] + nxy * p[2];
+                        edge_vertex(
+                            point(p[0], p[1], p[2]),
+                            s.samples.values[at(p)],
+                            point(q[0], q[1], q[2]),
+                            s.samples.values[at(q)],
+                        )
+                        .expect("a loop edge crosses")
+                    }));
+                    out.centres.push(c.as_vec3());
+                }
+                for tri in &table.cases[config] {
                     out.triangles.push(tri.map(|edge| {
+                        if edge == CENTRE {
+                            return CENTRE_IDS + (out.centres.len() - 1) as u16;
+                        }
                         let (axis, o) = edge_origin(edge);
                         local_edge(i + o[0], j + o[1], k + o[2], axis)
                     }));
                 }
             }
             out.triangle_rows.push(out.triangles.len() as u32);
+            out.centre_rows.push(out.centres.len() as u32);
         }
     }
     out.triangles.shrink_to_fit();
