@@ -29,4 +29,4 @@ pub fn mesh_samples(samples: &SampleGrid) -> IndexedMesh {
 }
 
 #[cfg(test)]
-mod tests;
+pub(crate) mod tests;

@@ -1,9 +1,11 @@
 //! Exhaustive and randomised marching-cubes tests on sign patterns, plus whole-path checks.
 //!
 //! Beyond closed / oriented / manifold / non-degenerate, each test checks the number of shells
-//! against digital topology: the face rule connects inside samples through grid edges only
-//! (6-connectivity) and outside samples also through face diagonals (18-connectivity), a Jordan
-//! pair, so the surface has (inside components + outside components − 1) shells.
+//! against digital topology: samples of one side connect through grid edges, and the two samples
+//! of one side on a diagonal of an ambiguous grid square connect through that square exactly when
+//! the asymptotic decider says their side holds the saddle (inside when joined, outside when not).
+//! Each surface separates two such components and they form a tree, so the surface has (inside
+//! components + outside components − 1) shells.
 
 use super::*;
 use crate::TopologyReport;
@@ -31,9 +33,9 @@ fn spec(n: usize) -> GridSpec {
     }
 }
 
-/// Components of samples with `inside(v) == want`, connected through grid edges, plus face
-/// diagonals when `diagonals` is set. Flood fill with a work list.
-fn components(g: &SampleGrid, want: bool, diagonals: bool) -> usize {
+/// Components of samples with `inside(v) == want`, connected through grid edges and through the
+/// diagonals of ambiguous squares their side wins by the decider. Flood fill with a work list.
+fn components(g: &SampleGrid, want: bool) -> usize {
     let [sx, sy, sz] = g.spec.samples();
     let mut seen = vec![false; g.values.len()];
     let mut count = 0;
@@ -42,16 +44,15 @@ fn components(g: &SampleGrid, want: bool, diagonals: bool) -> usize {
         offsets.push(d);
         offsets.push(d.map(|x| -x));
     }
-    if diagonals {
-        for (a, b) in [(0, 1), (0, 2), (1, 2)] {
-            for (u, v) in [(1, 1), (1, -1), (-1, 1), (-1, -1)] {
-                let mut d = [0i64; 3];
-                d[a] = u;
-                d[b] = v;
-                offsets.push(d);
-            }
+    for (a, b) in [(0, 1), (0, 2), (1, 2)] {
+        for (u, v) in [(1, 1), (1, -1), (-1, 1), (-1, -1)] {
+            let mut d = [0i64; 3];
+            d[a] = u;
+            d[b] = v;
+            offsets.push(d);
         }
     }
+    let value = |p: [i64; 3]| g.at(p[0] as usize, p[1] as usize, p[2] as usize);
     for start in 0..g.values.len() {
         if seen[start] || inside(g.values[start]) != want {
             continue;
@@ -60,38 +61,86 @@ fn components(g: &SampleGrid, want: bool, diagonals: bool) -> usize {
         seen[start] = true;
         let mut stack = vec![start];
         while let Some(s) = stack.pop() {
-            let (i, j, k) = (
+            let here = [
                 (s % sx) as i64,
                 ((s / sx) % sy) as i64,
                 (s / (sx * sy)) as i64,
-            );
+            ];
             for d in &offsets {
-                let (a, b, c) = (i + d[0], j + d[1], k + d[2]);
-                if a < 0 || b < 0 || c < 0 || a >= sx as i64 || b >= sy as i64 || c >= sz as i64 {
+                let p = [0, 1, 2].map(|a| here[a] + d[a]);
+                if p.iter()
+                    .zip([sx, sy, sz])
+                    .any(|(&c, n)| c < 0 || c >= n as i64)
+                {
                     continue;
                 }
-                let n = g.spec.index(a as usize, b as usize, c as usize);
-                if !seen[n] && inside(g.values[n]) == want {
-                    seen[n] = true;
-                    stack.push(n);
+                let n = g.spec.index(p[0] as usize, p[1] as usize, p[2] as usize);
+                if seen[n] || inside(g.values[n]) != want {
+                    continue;
                 }
+                if d.iter().filter(|&&x| x != 0).count() == 2 {
+                    // The other diagonal of the square.
+                    let axes: Vec<usize> = (0..3).filter(|&a| d[a] != 0).collect();
+                    let (mut q, mut r) = (here, here);
+                    q[axes[0]] += d[axes[0]];
+                    r[axes[1]] += d[axes[1]];
+                    let (vq, vr) = (value(q), value(r));
+                    if inside(vq) == want || inside(vr) == want {
+                        continue; // not ambiguous: connected through edges if at all
+                    }
+                    let (va, vb) = (g.values[s], g.values[n]);
+                    let joined = if want {
+                        table::face_joined(va, vb, vq, vr)
+                    } else {
+                        !table::face_joined(vq, vr, va, vb)
+                    };
+                    if !joined {
+                        continue;
+                    }
+                }
+                seen[n] = true;
+                stack.push(n);
             }
         }
     }
     count
 }
 
+/// Cells of the dense samples whose configuration joins a face, and cells with a centre vertex.
+pub(crate) fn joined_and_centre_cells(g: &SampleGrid) -> (usize, usize) {
+    let t = table::case_table();
+    let (mut joined, mut centres) = (0, 0);
+    let [cx, cy, cz] = g.spec.cells;
+    for k in 0..cz {
+        for j in 0..cy {
+            for i in 0..cx {
+                let v = |c: u8| {
+                    let c = usize::from(c);
+                    g.at(i + (c & 1), j + (c >> 1 & 1), k + (c >> 2 & 1))
+                };
+                let mask = (0..8u8)
+                    .filter(|&c| inside(v(c)))
+                    .fold(0, |m, c| m | 1 << c);
+                let config = table::cell_config(mask, v);
+                joined += usize::from(config >= 256);
+                centres += usize::from(t.centre_loop[config] != table::NO_CENTRE);
+            }
+        }
+    }
+    (joined, centres)
+}
+
 fn check(g: &SampleGrid, what: &str) -> TopologyReport {
     let mesh = mesh_samples(g);
     let r = TopologyReport::of(&mesh);
-    if components(g, true, false) == 0 {
+    if components(g, true) == 0 {
         assert_eq!(r.faces, 0, "{what}: no inside sample, no surface");
         return r;
     }
     assert!(r.closed && r.manifold && r.oriented, "{what}: {r:?}");
     assert_eq!(r.degenerate_faces, 0, "{what}");
     assert_eq!(r.unreferenced_vertices, 0, "{what}");
-    let expected = components(g, true, false) + components(g, false, true) - 1;
+    let expected = components(g, true) + components(g, false) - 1;
     assert_eq!(r.shells, expected, "{what}: shells");
     if r.faces > 0 {
         assert!(r.volume > 0.0, "{what}: outward orientation");
@@ -127,6 +176,7 @@ fn all_256_patterns_alone_are_closed_spheres() {
 #[test]
 fn ten_thousand_random_neighbourhoods_are_closed_manifolds() {
     let mut rng = Rng(0x5eed_1234_abcd_0001);
+    let (mut joined, mut centres) = (0, 0);
     for case in 0..10_000 {
         let g = spec(5);
         let mut values = vec![1.0f32; g.sample_count()];
@@ -146,7 +196,13 @@ fn ten_thousand_random_neighbourhoods_are_closed_manifolds() {
         let grid = SampleGrid::from_values(g, values).unwrap();
         let r = check(&grid, &format!("case {case}"));
         assert_eq!(r.euler_characteristic % 2, 0);
+        let (j, c) = joined_and_centre_cells(&grid);
+        (joined, centres) = (joined + j, centres + c);
     }
+    assert!(
+        joined > 1000 && centres > 100,
+        "joined {joined}, centres {centres}"
+    );
 }
 
 #[test]

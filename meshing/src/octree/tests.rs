@@ -41,6 +41,16 @@ fn models() -> Vec<(&'static str, Solid)> {
             "ellipsoid",
             Solid::sphere(1.0).scale(DVec3::new(1.0, 0.5, 0.25)),
         ),
+        // Tips whose neighbouring samples are exact zeros: joined faces.
+        (
+            "tetrahedron",
+            Solid::platonic(
+                solidkit_kernel::polyhedra::PlatonicKind::Tetrahedron,
+                solidkit_kernel::polyhedra::PlatonicSize::Circumradius(1.0),
+            ),
+        ),
+        // A sheet thinner than a cell: many ambiguous faces, and tunnel loops with centre vertices.
+        ("gyroid-sphere", solidkit_kernel::models::gyroid_sphere()),
     ]
 }
 
@@ -51,10 +61,15 @@ fn spec(s: &Solid, resolution: usize) -> crate::marching_cubes::GridSpec {
 #[test]
 fn sparse_equals_dense_bit_for_bit() {
     let (mut evaluated, mut total) = (0u64, 0u64);
+    let (mut joined, mut centres) = (0, 0);
     for (name, solid) in models() {
         let p = solid.compile();
         for res in [37, 64] {
             let g = spec(&solid, res);
+            let (j, c) = crate::marching_cubes::tests::joined_and_centre_cells(
+                &SampleGrid::sample_program(&p, g),
+            );
+            (joined, centres) = (joined + j, centres + c);
             let dense = mesh_dense(&p, g);
             let (sparse, stats) = mesh_sparse(&p, g, &SparseOptions::default()).unwrap();
             assert!(!dense.triangles.is_empty(), "{name}");
@@ -75,6 +90,11 @@ fn sparse_equals_dense_bit_for_bit() {
     assert!(
         evaluated < total,
         "culling: {evaluated} of {total} samples evaluated"
+    );
+    // The decider's joined faces and centre vertices were exercised on both paths.
+    assert!(
+        joined > 0 && centres > 0,
+        "joined {joined}, centres {centres}"
     );
 }
 
