@@ -134,7 +134,7 @@ fn build() -> PatchTable {
     let mut separators = Vec::with_capacity(256);
     for mask in 0..256usize {
         let mut of = [NO_PATCH; 12];
-        for (p, l) in mc.loops[mask].iter().enumerate() {
+        for (p, l) in mc.loops(mask).iter().enumerate() {
             for &e in l {
                 of[e as usize] = p as u8;
             }
@@ -157,7 +157,7 @@ fn build() -> PatchTable {
                 }
             }
         }
-        let loops = &mc.loops[mask];
+        let loops = &mc.loops(mask);
         let mut seps = vec![Vec::new(); loops.len()];
         for i in 0..loops.len() {
             for j in i + 1..loops.len() {
@@ -174,7 +174,7 @@ fn build() -> PatchTable {
         }
         separators.push(seps);
         patch_of_edge.push(of);
-        edges.push(mc.loops[mask].clone());
+        edges.push(mc.loops(mask).to_vec());
         ambiguous.push(amb);
         split_face.push(split);
     }

@@ -8,7 +8,7 @@
 //! from either end, so no two vertices coincide and no triangle is degenerate.
 
 use super::grid::SampleGrid;
-use super::table::{CENTRE, NO_CENTRE, case_table, cell_config, edge_origin};
+use super::table::{CENTRE, NO_CENTRE, case_table, edge_origin};
 use crate::sink::MeshSink;
 use glam::DVec3;
 use rayon::prelude::*;
@@ -137,7 +137,7 @@ fn layer_triangles(
                     mask |= 1 << c;
                 }
             }
-            let config = cell_config(mask, |c| {
+            let config = table.cell_config(mask, |c| {
                 let c = usize::from(c);
                 g.at(i + (c & 1), j + (c >> 1 & 1), k + (c >> 2 & 1))
             });
@@ -150,13 +150,13 @@ fn layer_triangles(
             };
             let centre = table.centre_loop[config];
             if centre != NO_CENTRE {
-                let l = &table.loops[config][centre as usize];
+                let l = &table.loops(config)[centre as usize];
                 centres.push(loop_centre(l.iter().map(|&e| {
                     let (slice, local) = vertex(e);
                     slices[slice].positions[local as usize]
                 })));
             }
-            for tri in &table.cases[config] {
+            for tri in table.triangles(config) {
                 out.push(tri.map(|e| {
                     if e == CENTRE {
                         return CENTRE_FLAG | (centres.len() - 1) as u32;

@@ -36,7 +36,7 @@ pub type CaseTriangles = Vec<[u8; 3]>;
 /// Number of cell configurations: 256 sign masks times 64 joined-face sets.
 pub const CONFIGS: usize = 256 * 64;
 
-/// The corner number, in [`CaseTable::cases`], of the centre vertex of a loop fanned from its
+/// The corner number, in [`CaseTable::triangles`], of the centre vertex of a loop fanned from its
 /// centroid (see [`CaseTable::centre_loop`]).
 pub const CENTRE: u8 = 12;
 
@@ -45,10 +45,15 @@ pub const NO_CENTRE: u8 = u8::MAX;
 
 /// The case table, indexed by configuration ([`config`]).
 pub struct CaseTable {
-    /// `cases[config]`: triangles for that configuration, as cell edge numbers or [`CENTRE`].
-    pub cases: Vec<CaseTriangles>,
-    /// `loops[config]`: the edge loops the triangles were made from.
-    pub loops: Vec<Vec<Vec<u8>>>,
+    /// Triangles of every configuration, one after the other (see [`CaseTable::triangles`]).
+    triangles: Vec<[u8; 3]>,
+    /// `starts[config]..starts[config + 1]`: the range of that configuration in `triangles`.
+    starts: Vec<u32>,
+    /// The edge loops of each distinct configuration (see [`CaseTable::loops`]).
+    loop_sets: Vec<Vec<Vec<u8>>>,
+    /// `canonical[config]`: the index in `loop_sets` of the configuration with the same loops
+    /// (joined bits of faces that are not ambiguous dropped).
+    canonical: Vec<u16>,
     /// `centre_loop[config]`: the loop fanned from the centroid of its crossings (whose position
     /// is the vertex [`CENTRE`]), or [`NO_CENTRE`].
     pub centre_loop: Vec<u8>,
@@ -79,32 +84,53 @@ pub fn face_joined(a: f32, c: f32, b: f32, d: f32) -> bool {
     f64::from(a) * f64::from(c) > f64::from(b) * f64::from(d)
 }
 
-/// The configuration of a cell from its eight corner values (corner `c` at [`corner_offset`]),
-/// with the sign `mask` already computed from them.
-#[inline]
-pub fn cell_config(mask: usize, value: impl Fn(u8) -> f32) -> usize {
-    let t = case_table();
-    let amb = t.ambiguous[mask];
-    if amb == 0 {
-        return mask;
+impl CaseTable {
+    /// The triangles of configuration `config`, as cell edge numbers or [`CENTRE`], in one flat
+    /// array (the hot lookup of every polygonizer).
+    #[inline]
+    pub fn triangles(&self, config: usize) -> &[[u8; 3]] {
+        &self.triangles[self.starts[config] as usize..self.starts[config + 1] as usize]
     }
-    let mut joined = 0u8;
-    for (bit, f) in FACES.iter().enumerate() {
-        if amb >> bit & 1 == 1 {
-            // The face's corners in walk order; its inside diagonal is the one holding f[0] when
-            // f[0] is inside, else the other.
-            let v = f.map(&value);
-            let (a, c, b, d) = if mask >> f[0] & 1 == 1 {
-                (v[0], v[2], v[1], v[3])
-            } else {
-                (v[1], v[3], v[0], v[2])
-            };
-            if face_joined(a, c, b, d) {
-                joined |= 1 << bit;
+
+    /// The closed edge loops of configuration `config` the triangles were made from (oriented:
+    /// triangles follow their direction).
+    #[inline]
+    pub fn loops(&self, config: usize) -> &[Vec<u8>] {
+        &self.loop_sets[usize::from(self.canonical[config])]
+    }
+
+    /// The configuration of a cell from its eight corner values (corner `c` at
+    /// [`corner_offset`]), with the sign `mask` already computed from them.
+    #[inline]
+    pub fn cell_config(&self, mask: usize, value: impl Fn(u8) -> f32) -> usize {
+        let amb = self.ambiguous[mask];
+        if amb == 0 {
+            return mask;
+        }
+        let mut joined = 0u8;
+        for (bit, f) in FACES.iter().enumerate() {
+            if amb >> bit & 1 == 1 {
+                // The face's corners in walk order; its inside diagonal is the one holding f[0]
+                // when f[0] is inside, else the other.
+                let v = f.map(&value);
+                let (a, c, b, d) = if mask >> f[0] & 1 == 1 {
+                    (v[0], v[2], v[1], v[3])
+                } else {
+                    (v[1], v[3], v[0], v[2])
+                };
+                if face_joined(a, c, b, d) {
+                    joined |= 1 << bit;
+                }
             }
         }
+        mask | usize::from(joined) << 8
     }
-    mask | usize::from(joined) << 8
+}
+
+/// [`CaseTable::cell_config`] on the shared table.
+#[inline]
+pub fn cell_config(mask: usize, value: impl Fn(u8) -> f32) -> usize {
+    case_table().cell_config(mask, value)
 }
 
 /// The six faces' corners in walk order, face `2·axis + side`.
@@ -191,33 +217,39 @@ fn build() -> CaseTable {
             }
         }
     }
-    let mut cases = vec![CaseTriangles::new(); CONFIGS];
-    let mut loops = vec![Vec::new(); CONFIGS];
-    let mut centre_loop = vec![NO_CENTRE; CONFIGS];
-    // Distinct configurations first (joined ⊆ ambiguous), then the rest copied from them.
+    // Distinct configurations (joined ⊆ ambiguous) first, then every configuration pointed to
+    // the one with its ambiguous bits only.
+    let mut loop_sets = Vec::new();
+    let mut fans = Vec::new();
+    let mut canonical = vec![0u16; CONFIGS];
     for mask in 0..256usize {
         let amb = ambiguous[mask];
         for joined in 0..64u8 {
             if joined & !amb == 0 {
                 let l = case_loops(mask as u8, joined);
-                let i = mask | usize::from(joined) << 8;
-                (cases[i], centre_loop[i]) = fan(&l);
-                loops[i] = l;
+                canonical[mask | usize::from(joined) << 8] = loop_sets.len() as u16;
+                fans.push(fan(&l));
+                loop_sets.push(l);
             }
         }
     }
+    let mut centre_loop = vec![NO_CENTRE; CONFIGS];
+    let mut triangles = Vec::new();
+    let mut starts = Vec::with_capacity(CONFIGS + 1);
     for i in 0..CONFIGS {
         let (mask, joined) = (i & 255, (i >> 8) as u8);
-        let canonical = mask | usize::from(joined & ambiguous[mask]) << 8;
-        if canonical != i {
-            cases[i] = cases[canonical].clone();
-            loops[i] = loops[canonical].clone();
-            centre_loop[i] = centre_loop[canonical];
-        }
+        canonical[i] = canonical[mask | usize::from(joined & ambiguous[mask]) << 8];
+        let (tris, centre) = &fans[usize::from(canonical[i])];
+        centre_loop[i] = *centre;
+        starts.push(triangles.len() as u32);
+        triangles.extend_from_slice(tris);
     }
+    starts.push(triangles.len() as u32);
     CaseTable {
-        cases,
-        loops,
+        triangles,
+        starts,
+        loop_sets,
+        canonical,
         centre_loop,
         ambiguous,
     }
@@ -358,11 +390,12 @@ mod tests {
         let t = case_table();
         let mut centres = 0;
         for config in configs() {
-            let sides: Vec<(u8, u8)> = t.loops[config]
+            let sides: Vec<(u8, u8)> = t
+                .loops(config)
                 .iter()
                 .flat_map(|l| (0..l.len()).map(move |k| (l[k], l[(k + 1) % l.len()])))
                 .collect();
-            for tri in &t.cases[config] {
+            for tri in t.triangles(config) {
                 for k in 0..3 {
                     let (a, b) = (tri[k], tri[(k + 1) % 3]);
                     let side = sides.contains(&(a, b)) || sides.contains(&(b, a));
@@ -372,14 +405,17 @@ mod tests {
                     );
                 }
             }
-            let with_centre = t.cases[config].iter().filter(|tri| tri.contains(&CENTRE));
+            let with_centre = t
+                .triangles(config)
+                .iter()
+                .filter(|tri| tri.contains(&CENTRE));
             let c = t.centre_loop[config];
             if c == NO_CENTRE {
                 assert_eq!(with_centre.count(), 0);
             } else {
                 centres += 1;
                 assert_ne!(config >> 8, 0, "config {config:#x}");
-                let l = &t.loops[config][c as usize];
+                let l = &t.loops(config)[c as usize];
                 assert!(l.len() >= 8);
                 assert_eq!(with_centre.count(), l.len());
             }
@@ -429,17 +465,17 @@ mod tests {
                     (mask >> a & 1) != (mask >> b & 1)
                 })
                 .collect();
-            let mut used: Vec<u8> = t.loops[config].iter().flatten().copied().collect();
+            let mut used: Vec<u8> = t.loops(config).iter().flatten().copied().collect();
             used.sort();
             assert_eq!(used, crossing, "config {config:#x}");
             let centre = t.centre_loop[config] as usize;
-            let expected: usize = (t.loops[config].iter().enumerate())
+            let expected: usize = (t.loops(config).iter().enumerate())
                 .map(|(n, l)| if n == centre { l.len() } else { l.len() - 2 })
                 .sum();
-            assert_eq!(t.cases[config].len(), expected);
-            assert!(t.loops[config].iter().all(|l| l.len() >= 3));
+            assert_eq!(t.triangles(config).len(), expected);
+            assert!(t.loops(config).iter().all(|l| l.len() >= 3));
         }
-        assert!(t.cases[0].is_empty() && t.cases[255].is_empty());
+        assert!(t.triangles(0).is_empty() && t.triangles(255).is_empty());
     }
 
     /// Each edge of a case's triangulation is either a loop side (on a cell face, shared with the
@@ -449,12 +485,13 @@ mod tests {
         let t = case_table();
         for mask in configs() {
             let mut directed: Vec<(u8, u8)> = Vec::new();
-            for tri in &t.cases[mask] {
+            for tri in t.triangles(mask) {
                 for k in 0..3 {
                     directed.push((tri[k], tri[(k + 1) % 3]));
                 }
             }
-            let sides: Vec<(u8, u8)> = t.loops[mask]
+            let sides: Vec<(u8, u8)> = t
+                .loops(mask)
                 .iter()
                 .flat_map(|l| (0..l.len()).map(move |k| (l[k], l[(k + 1) % l.len()])))
                 .collect();
@@ -490,12 +527,13 @@ mod tests {
         for config in configs() {
             let (mask, joined) = (config & 255, (config >> 8) as u8);
             let flipped = config_of(255 - mask, t.ambiguous[mask] ^ joined);
-            let reversed: Vec<Vec<u8>> = t.loops[flipped]
+            let reversed: Vec<Vec<u8>> = t
+                .loops(flipped)
                 .iter()
                 .map(|l| l.iter().rev().copied().collect())
                 .collect();
             assert_eq!(
-                canonical(&t.loops[config]),
+                canonical(t.loops(config)),
                 canonical(&reversed),
                 "config {config:#x}"
             );
@@ -513,7 +551,8 @@ mod tests {
         let t = case_table();
         for config in configs() {
             let (mask, joined) = ((config & 255) as u8, (config >> 8) as u8);
-            let segments: Vec<(u8, u8)> = t.loops[config]
+            let segments: Vec<(u8, u8)> = t
+                .loops(config)
                 .iter()
                 .flat_map(|l| (0..l.len()).map(move |k| (l[k], l[(k + 1) % l.len()])))
                 .collect();
@@ -579,11 +618,11 @@ mod tests {
             .filter(|&c| values[c] < 0.0)
             .fold(0, |m, c| m | 1 << c);
         let config = cell_config(mask, |c| values[c as usize]);
-        let loops = &case_table().loops[config];
+        let loops = &case_table().loops(config);
         assert_eq!(loops.len(), 3);
         assert!(loops.iter().all(|l| l.len() == 3));
         assert_eq!(
-            case_table().loops[mask].len(),
+            case_table().loops(mask).len(),
             2,
             "the separating rule seals the tip off"
         );

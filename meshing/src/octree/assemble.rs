@@ -103,6 +103,9 @@ pub(crate) fn assemble(
             let (bj, jl) = (j / brick, j % brick);
             for &b in rows.get(&(bk, bj)).map_or(no_bricks, Vec::as_slice) {
                 let t = &triangles[b];
+                if t.centre_rows.is_empty() {
+                    continue;
+                }
                 let r = kl * bricks[b].extent[1] + jl;
                 centre_bases[b][r] = count;
                 count += t.centre_rows[r + 1] - t.centre_rows[r];
@@ -132,13 +135,13 @@ pub(crate) fn assemble(
                     }
                 }
                 let mut tris = Vec::with_capacity(t.triangles.len());
-                for r in 0..t.triangle_rows.len() - 1 {
-                    let span = t.triangle_rows[r] as usize..t.triangle_rows[r + 1] as usize;
-                    let centre = centre_bases[b][r].wrapping_sub(t.centre_rows[r]);
+                for (r, w) in t.triangle_rows.windows(2).enumerate() {
+                    let span = w[0] as usize..w[1] as usize;
                     tris.extend(t.triangles[span].iter().map(|tri| {
                         tri.map(|id| {
                             if id >= CENTRE_IDS {
-                                return centre.wrapping_add(u32::from(id - CENTRE_IDS));
+                                let first = centre_bases[b][r] - t.centre_rows[r];
+                                return first + u32::from(id - CENTRE_IDS);
                             }
                             let (l, _) = local_parts(id);
                             if l[0] < o.owned[0] && l[1] < o.owned[1] && l[2] < o.owned[2] {
@@ -173,6 +176,9 @@ pub(crate) fn assemble(
             let (bj, jl) = (j / brick, j % brick);
             for &b in rows.get(&(bk, bj)).map_or(no_bricks, Vec::as_slice) {
                 let (_, _, centres, centre_rows) = &resolved[b];
+                if centre_rows.is_empty() {
+                    continue;
+                }
                 let r = kl * extents[b][1] + jl;
                 let span = centre_rows[r] as usize..centre_rows[r + 1] as usize;
                 ids.extend(centres[span].iter().map(|p| sink.add_vertex(p.as_dvec3())));

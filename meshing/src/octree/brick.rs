@@ -9,7 +9,7 @@
 
 use super::subdivide::Node;
 use crate::marching_cubes::polygonize::loop_centre;
-use crate::marching_cubes::table::{CENTRE, NO_CENTRE, case_table, cell_config, edge_origin};
+use crate::marching_cubes::table::{CENTRE, NO_CENTRE, case_table, edge_origin};
 use crate::marching_cubes::{GridSpec, edge_vertex, inside, snap_noise};
 use glam::Vec3;
 use solidkit_kernel::Program;
@@ -73,7 +73,7 @@ pub(crate) struct BrickTriangles {
     pub triangle_rows: Vec<u32>,
     /// Centre vertices of loops fanned from their centroid, in cell order.
     pub centres: Vec<Vec3>,
-    /// Start of each cell row `(k, j)` in `centres`.
+    /// Start of each cell row `(k, j)` in `centres`; empty when `centres` is.
     pub centre_rows: Vec<u32>,
 }
 
@@ -217,10 +217,11 @@ pub(crate) fn process(
                 if mask == 0 || mask == 255 {
                     continue;
                 }
-                let config = cell_config(mask, |c| s.samples.values[base + corner[c as usize]]);
+                let config =
+                    table.cell_config(mask, |c| s.samples.values[base + corner[c as usize]]);
                 let centre = table.centre_loop[config];
                 if centre != NO_CENTRE {
-                    let l = &table.loops[config][centre as usize];
+                    let l = &table.loops(config)[centre as usize];
                     let c = loop_centre(l.iter().map(|&edge| {
                         let (axis, o) = edge_origin(edge);
                         let p = [i + o[0], j + o[1], k + o[2]];
@@ -237,7 +238,7 @@ pub(crate) fn process(
                     }));
                     out.centres.push(c.as_vec3());
                 }
-                for tri in &table.cases[config] {
+                for tri in table.triangles(config) {
                     out.triangles.push(tri.map(|edge| {
                         if edge == CENTRE {
                             return CENTRE_IDS + (out.centres.len() - 1) as u16;
@@ -252,6 +253,10 @@ pub(crate) fn process(
         }
     }
     out.triangles.shrink_to_fit();
+    if out.centres.is_empty() {
+        // The common case: no row table kept (an empty table means no centre in any row).
+        out.centre_rows = Vec::new();
+    }
     BrickOutput {
         edges,
         triangles: out,
