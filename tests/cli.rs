@@ -341,3 +341,36 @@ fn mesh_with_dual_contouring_and_tolerance() {
         );
     }
 }
+
+/// `bench` runs each case in a child process per method and reports both, with their checks.
+#[test]
+fn bench_runs_both_methods_in_child_processes() {
+    let o = solidkit(&[
+        "--threads",
+        "1",
+        "bench",
+        "--model",
+        "sphere",
+        "--resolution",
+        "24",
+        "--method",
+        "mc,dc",
+        "--repeat",
+        "1",
+        "--json",
+    ]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let v = stdout_json(&o);
+    let cases = v["cases"].as_array().expect("cases");
+    let methods: Vec<&str> = cases
+        .iter()
+        .map(|c| c["method"].as_str().unwrap())
+        .collect();
+    assert_eq!(methods, ["mc", "dc"]);
+    for c in cases {
+        assert_eq!(c["check_passed"], Value::Bool(true), "{c}");
+        assert!(c["peak_memory_bytes"].as_u64().is_some(), "{c}");
+    }
+    let bad = solidkit(&["bench", "--method", "xx"]);
+    assert_eq!(bad.status.code(), Some(2));
+}

@@ -88,12 +88,23 @@ impl From<SchemeArg> for solidkit_meshing::subdivision::Scheme {
 }
 
 /// Polygonization method.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum, serde::Serialize, serde::Deserialize)]
+#[serde(rename_all = "lowercase")]
 pub enum Method {
     /// Marching cubes.
     Mc,
     /// Manifold dual contouring (sharp features kept; `--tolerance` simplifies).
     Dc,
+}
+
+impl Method {
+    /// The method's name on the command line and in JSON.
+    pub fn name(self) -> &'static str {
+        match self {
+            Method::Mc => "mc",
+            Method::Dc => "dc",
+        }
+    }
 }
 
 /// Arguments of `solidkit mesh`.
@@ -209,6 +220,9 @@ pub struct BenchArgs {
     /// Print JSON instead of a table.
     #[arg(long)]
     pub json: bool,
+    /// Polygonization methods, comma-separated: mc, dc (each case runs with each).
+    #[arg(long, value_enum, value_delimiter = ',', default_value = "mc")]
+    pub method: Vec<Method>,
 }
 
 /// Arguments of the hidden `solidkit bench-case` (one case; prints one JSON line).
@@ -223,6 +237,9 @@ pub struct BenchCaseArgs {
     /// Runs.
     #[arg(long, default_value_t = 5, value_parser = clap::value_parser!(u32).range(1..))]
     pub repeat: u32,
+    /// Polygonization method.
+    #[arg(long, value_enum, default_value_t = Method::Mc)]
+    pub method: Method,
 }
 
 fn parse_tolerance(s: &str) -> Result<f64, String> {

@@ -14,7 +14,7 @@ mod memory;
 mod raw;
 mod table;
 
-use crate::args::{BenchArgs, BenchCaseArgs};
+use crate::args::{BenchArgs, BenchCaseArgs, Method};
 use anyhow::{Context, Result, bail};
 use case::CaseResult;
 use serde_json::json;
@@ -59,16 +59,20 @@ pub fn run(a: &BenchArgs) -> Result<u8> {
             &a.resolution
         };
         for &n in resolutions {
-            eprintln!(
-                "bench: {} at {n}^3, {threads} threads, {} runs",
-                model.name, a.repeat
-            );
-            let r = if a.in_process {
-                case::run(model, n, a.repeat, false)?
-            } else {
-                run_child(&model.name, n, a.repeat, threads)?
-            };
-            results.push(r);
+            for &method in &a.method {
+                eprintln!(
+                    "bench: {} at {n}^3 ({}), {threads} threads, {} runs",
+                    model.name,
+                    method.name(),
+                    a.repeat
+                );
+                let r = if a.in_process {
+                    case::run(model, n, a.repeat, method, false)?
+                } else {
+                    run_child(&model.name, n, a.repeat, method, threads)?
+                };
+                results.push(r);
+            }
         }
     }
     if a.json {
@@ -90,13 +94,19 @@ pub fn run(a: &BenchArgs) -> Result<u8> {
 /// The hidden `bench-case`: runs one case and prints its result as one JSON line.
 pub fn run_case(a: &BenchCaseArgs) -> Result<u8> {
     let model = Model::by_name(&a.model)?;
-    let r = case::run(&model, a.resolution, a.repeat, true)?;
+    let r = case::run(&model, a.resolution, a.repeat, a.method, true)?;
     println!("{}", serde_json::to_string(&r)?);
     Ok(0)
 }
 
 /// Runs one case in a child process of this binary and reads its result.
-fn run_child(model: &str, resolution: usize, repeat: u32, threads: usize) -> Result<CaseResult> {
+fn run_child(
+    model: &str,
+    resolution: usize,
+    repeat: u32,
+    method: Method,
+    threads: usize,
+) -> Result<CaseResult> {
     let exe = std::env::current_exe().context("cannot find the solidkit binary")?;
     let out = Command::new(exe)
         .args([
@@ -108,6 +118,7 @@ fn run_child(model: &str, resolution: usize, repeat: u32, threads: usize) -> Res
         ])
         .args(["--resolution", &resolution.to_string()])
         .args(["--repeat", &repeat.to_string()])
+        .args(["--method", method.name()])
         .output()
         .context("cannot run the benchmark child process")?;
     if !out.status.success() {

@@ -70,13 +70,7 @@ pub fn run(a: &MeshArgs) -> Result<u8> {
             ("report_time_s", json!(report_s)),
             ("resolution", json!(a.resolution)),
             ("cells", json!(spec.cells)),
-            (
-                "method",
-                json!(match a.method {
-                    Method::Mc => "mc",
-                    Method::Dc => "dc",
-                }),
-            ),
+            ("method", json!(a.method.name())),
             ("tolerance", json!(a.tolerance)),
             ("samples_evaluated", json!(stats.samples_evaluated)),
             ("program_length", json!(program.len())),

@@ -3,11 +3,13 @@
 
 use super::memory::peak_rss_bytes;
 use super::table::{Table, si};
+use crate::args::Method;
 use anyhow::{Result, anyhow};
 use serde::{Deserialize, Serialize};
 use serde_json::{Value, json};
 use solidkit_kernel::models::Model;
 use solidkit_meshing::TopologyReport;
+use solidkit_meshing::dual_contouring::{DcOptions, mesh_dc};
 use solidkit_meshing::marching_cubes::GridSpec;
 use solidkit_meshing::octree::{SparseOptions, mesh_sparse};
 use std::time::Instant;
@@ -52,6 +54,8 @@ pub struct CaseResult {
     pub resolution: usize,
     /// Rayon worker threads.
     pub threads: usize,
+    /// Polygonization method.
+    pub method: Method,
     /// Time of each run (lowering and meshing), seconds.
     pub times_s: Vec<f64>,
     /// Triangles of the mesh.
@@ -128,6 +132,7 @@ pub fn run(
     model: &Model,
     resolution: usize,
     repeat: u32,
+    method: Method,
     measure_memory: bool,
 ) -> Result<CaseResult> {
     let spec = GridSpec::covering(&model.domain, resolution)
@@ -139,7 +144,10 @@ pub fn run(
         drop(last.take());
         let start = Instant::now();
         let program = model.solid.compile();
-        let (mesh, stats) = mesh_sparse(&program, spec, &SparseOptions::default())?;
+        let (mesh, stats) = match method {
+            Method::Mc => mesh_sparse(&program, spec, &SparseOptions::default())?,
+            Method::Dc => mesh_dc(&program, spec, &DcOptions::default())?,
+        };
         times_s.push(start.elapsed().as_secs_f64());
         last = Some((mesh, stats, program.len()));
     }
@@ -154,6 +162,7 @@ pub fn run(
         model: model.name.clone(),
         resolution,
         threads: rayon::current_num_threads(),
+        method,
         times_s,
         triangles: mesh.triangle_count(),
         vertices: mesh.vertex_count(),
@@ -174,8 +183,9 @@ pub fn run(
 }
 
 /// Column titles of the case table.
-pub const COLUMNS: [&str; 14] = [
+pub const COLUMNS: [&str; 15] = [
     "model",
+    "method",
     "res",
     "threads",
     "median s",
@@ -207,6 +217,7 @@ pub fn table(results: &[CaseResult]) -> Table {
         };
         t.rows.push(vec![
             r.model.clone(),
+            r.method.name().to_string(),
             r.resolution.to_string(),
             r.threads.to_string(),
             format!("{:.3}", r.median_s()),
@@ -238,7 +249,7 @@ mod tests {
     #[test]
     fn a_tiny_case_fills_one_row_of_every_column() {
         let model = Model::by_name("sphere").expect("model");
-        let r = run(&model, 16, 2, false).expect("runs");
+        let r = run(&model, 16, 2, Method::Mc, false).expect("runs");
         assert_eq!(r.times_s.len(), 2);
         assert!(r.triangles > 0 && r.samples_evaluated > 0);
         assert!(r.check.passed(), "{:?}", r.check);
@@ -264,6 +275,17 @@ mod tests {
         ] {
             assert!(v.get(key).is_some(), "{key}");
         }
+    }
+
+    #[test]
+    fn dual_contouring_cases_run_and_pass_their_check() {
+        let model = Model::by_name("sphere").expect("model");
+        let r = run(&model, 16, 1, Method::Dc, false).expect("runs");
+        assert_eq!(r.method, Method::Dc);
+        assert!(r.check.passed(), "{:?}", r.check);
+        assert!(r.check.volume_error().is_some_and(|e| e.abs() < 0.02));
+        let line = serde_json::to_string(&r).expect("json");
+        assert!(line.contains("\"method\":\"dc\""), "{line}");
     }
 
     #[test]
