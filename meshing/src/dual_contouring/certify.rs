@@ -61,10 +61,12 @@ pub(crate) enum FaceKind {
 
 impl FaceKind {
     /// The kind from the inside flags of the face corners: `E`'s ends `e0` (`t = 0`), `e1`, and
-    /// the far corners `f0` (`t = 0`), `f1`. `E` crosses (`e0 != e1`).
-    pub fn of(e0: bool, e1: bool, f0: bool, f1: bool) -> Self {
+    /// the far corners `f0` (`t = 0`), `f1`. `E` crosses (`e0 != e1`). On an ambiguous face,
+    /// `joined` says the face joins its inside corners: `E`'s segment then cuts off `E`'s outside
+    /// end instead of its inside end (ignored on other faces).
+    pub fn of(e0: bool, e1: bool, f0: bool, f1: bool, joined: bool) -> Self {
         if e0 == f1 && e1 == f0 {
-            if e0 {
+            if e0 != joined {
                 FaceKind::AmbiguousLow
             } else {
                 FaceKind::AmbiguousHigh
@@ -255,16 +257,37 @@ mod tests {
 
     #[test]
     fn face_kinds() {
-        assert_eq!(FaceKind::of(true, false, true, false), FaceKind::Far);
-        assert_eq!(FaceKind::of(true, false, false, false), FaceKind::Low);
-        assert_eq!(FaceKind::of(true, false, true, true), FaceKind::High);
+        for joined in [false, true] {
+            // Faces with one segment do not depend on the decider.
+            assert_eq!(
+                FaceKind::of(true, false, true, false, joined),
+                FaceKind::Far
+            );
+            assert_eq!(
+                FaceKind::of(true, false, false, false, joined),
+                FaceKind::Low
+            );
+            assert_eq!(
+                FaceKind::of(true, false, true, true, joined),
+                FaceKind::High
+            );
+        }
         assert_eq!(
-            FaceKind::of(true, false, false, true),
+            FaceKind::of(true, false, false, true, false),
             FaceKind::AmbiguousLow
         );
         assert_eq!(
-            FaceKind::of(false, true, true, false),
+            FaceKind::of(false, true, true, false, false),
             FaceKind::AmbiguousHigh
+        );
+        // Joined: the segment cuts off E's outside end.
+        assert_eq!(
+            FaceKind::of(true, false, false, true, true),
+            FaceKind::AmbiguousHigh
+        );
+        assert_eq!(
+            FaceKind::of(false, true, true, false, true),
+            FaceKind::AmbiguousLow
         );
     }
 

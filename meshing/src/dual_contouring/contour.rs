@@ -7,7 +7,8 @@ use super::block::{Block, NO_VERTEX, OwnedEdge};
 use super::certify::{EPS, EdgeFrame, FaceKind, RingFace, certify};
 use super::crossing::DcField;
 use super::faces::{DualFace, face_vertex};
-use super::patches::{NO_PATCH, edge_number, face_segment, patch_table};
+use super::interlock::safe_point;
+use super::patches::{Config, NO_PATCH, edge_number, face_segment, patch_table};
 use crate::marching_cubes::GridSpec;
 use glam::DVec3;
 use rayon::prelude::*;
@@ -143,7 +144,8 @@ pub(crate) struct Contour {
 pub(crate) struct CellRef {
     pub block: usize,
     pub local: usize,
-    pub mask: u8,
+    /// The cell's configuration (sign mask and joined faces).
+    pub config: Config,
     /// Global number of the cell's first patch vertex.
     pub first: u32,
 }
@@ -169,7 +171,7 @@ impl Cells<'_> {
         (first != NO_VERTEX).then(|| CellRef {
             block: b,
             local,
-            mask: o.masks[local],
+            config: o.configs[local],
             first: self.bases[b] + first,
         })
     }
@@ -203,7 +205,7 @@ pub(crate) fn assemble<P: Probe>(
             for e in &b.edges {
                 match polygon(b, e, &cells, spec, probe, scratch) {
                     Some(Ok(q)) => quads.push(q),
-                    Some(Err(corners)) => specials.push((corners, e.point)),
+                    Some(Err(fan)) => specials.push(fan),
                     None => {}
                 }
             }
@@ -254,8 +256,8 @@ pub(crate) fn assemble<P: Probe>(
 }
 
 /// The polygon around owned edge `e`: `Ok` for a quad certified as two triangles, `Err` with its
-/// corners (cell vertices and any face vertices) for a fan from the crossing, `None` when a cell
-/// around it lies outside the grid.
+/// corners (cell vertices and any face vertices) and centre for a fan from a point of the edge,
+/// `None` when a cell around it lies outside the grid.
 fn polygon<P: Probe>(
     b: &Block,
     e: &OwnedEdge,
@@ -263,7 +265,7 @@ fn polygon<P: Probe>(
     spec: &GridSpec,
     probe: &P,
     scratch: &mut P::Scratch,
-) -> Option<Result<Quad, Vec<Corner>>> {
+) -> Option<Result<Quad, (Vec<Corner>, DVec3)>> {
     let table = patch_table();
     let axis = e.axis as usize;
     let (u, v) = ((axis + 1) % 3, (axis + 2) % 3);
@@ -296,14 +298,14 @@ fn polygon<P: Probe>(
     let refs = refs.map(|r| r.expect("set"));
     let vertex = |k: usize| {
         let (_, r) = refs[k];
-        let p = table.patch_of_edge[r.mask as usize][edge_in_cell[k] as usize];
+        let p = table.get(r.config).patch_of_edge[edge_in_cell[k] as usize];
         debug_assert_ne!(p, NO_PATCH);
         r.first + p as u32
     };
     let position = |k: usize| {
         let (_, r) = refs[k];
         let o = &cells.blocks[r.block];
-        let p = table.patch_of_edge[r.mask as usize][edge_in_cell[k] as usize];
+        let p = table.get(r.config).patch_of_edge[edge_in_cell[k] as usize];
         o.vertices[(o.first[r.local] + p as u32) as usize]
     };
     let frame = EdgeFrame {
@@ -314,9 +316,32 @@ fn polygon<P: Probe>(
     let inside_at = |k: usize, s: [usize; 3]| {
         let (c, r) = refs[k];
         let o = [0, 1, 2].map(|a| s[a] - c[a]);
-        r.mask >> (o[0] | o[1] << 1 | o[2] << 2) & 1 == 1
+        r.config >> (o[0] | o[1] << 1 | o[2] << 2) & 1 == 1
     };
-    let several = |r: &CellRef| table.edges[r.mask as usize].len() > 1;
+    let several = |r: &CellRef| table.get(r.config).edges.len() > 1;
+    // In cells with several patches the pieces must keep to their patch's side.
+    let seps = [0, 1, 2, 3].map(|k| {
+        let (_, r) = refs[k];
+        let patch = table.get(r.config).patch_of_edge[edge_in_cell[k] as usize];
+        cells.blocks[r.block].separators(r.local, patch)
+    });
+    let side = |k: usize, x: DVec3| {
+        // Local edge coordinates to ring cell k's unit coordinates.
+        let (du, dv) = around[k];
+        let mut unit = DVec3::ZERO;
+        unit[u] = x.x + du as f64;
+        unit[v] = x.y + dv as f64;
+        unit[axis] = x.z;
+        seps[k].iter().all(|s| s.value(unit) < -EPS)
+    };
+    // A fan's centre: the crossing, unless it lies on the wrong side of an interlocked cell's
+    // plane; then the linear point, which lies on the right side of every such plane.
+    let centre = if (0..4).any(|k| table.get(refs[k].1.config).interlock.is_some()) {
+        let c = frame.local(e.point);
+        safe_point(e.point, e.linear, |_| (0..4).all(|k| side(k, c)))
+    } else {
+        e.point
+    };
     // At most four cell vertices and four face vertices; a vector only for fans.
     let mut corners = [Corner::Vertex(0); 8];
     let mut count = 0;
@@ -337,16 +362,6 @@ fn polygon<P: Probe>(
         f0[w] = if ca[w] == g[w] { g[w] + 1 } else { g[w] - 1 };
         let mut f1 = f0;
         f1[axis] += 1;
-        let kind = FaceKind::of(
-            e.lower_inside,
-            !e.lower_inside,
-            inside_at(k, f0),
-            inside_at(k, f1),
-        );
-        faces[k] = RingFace {
-            on_x: fa == u,
-            kind,
-        };
         let (lower, upper, lower_k, upper_k) = if ca[fa] < cb[fa] {
             (ra, rb, k, l)
         } else {
@@ -355,9 +370,27 @@ fn polygon<P: Probe>(
         let lower_cell = if lower_k == k { ca } else { cb };
         let bit_hi = 1 << (2 * fa + 1);
         let bit_lo = 1 << (2 * fa);
+        // Both cells decide the shared face alike (same four samples); the lower cell's word
+        // is the one every user of the face reads.
+        let joined = table.get(lower.config).joined & bit_hi != 0;
+        debug_assert!(
+            table.get(lower.config).ambiguous & bit_hi == 0
+                || joined == (table.get(upper.config).joined & bit_lo != 0)
+        );
+        let kind = FaceKind::of(
+            e.lower_inside,
+            !e.lower_inside,
+            inside_at(k, f0),
+            inside_at(k, f1),
+            joined,
+        );
+        faces[k] = RingFace {
+            on_x: fa == u,
+            kind,
+        };
         let ambiguous = kind.ambiguous();
         let segment = if ambiguous {
-            face_segment(lower.mask, fa, 1, edge_in_cell[lower_k])
+            face_segment(lower.config, fa, 1, edge_in_cell[lower_k])
         } else {
             0
         };
@@ -366,16 +399,17 @@ fn polygon<P: Probe>(
             axis: fa as u8,
             segment,
         });
-        if table.split_face[lower.mask as usize] & bit_hi != 0
-            && table.split_face[upper.mask as usize] & bit_lo != 0
+        if table.get(lower.config).split_face & bit_hi != 0
+            && table.get(upper.config).split_face & bit_lo != 0
         {
             fan = true;
             corners[count] = key;
             count += 1;
         } else if ambiguous || several(&lower) || several(&upper) {
             let face = DualFace::new(
-                (lower.mask, lower_cell),
-                upper.mask,
+                cells,
+                (&lower, lower_cell),
+                &upper,
                 fa,
                 edge_in_cell[lower_k],
                 edge_in_cell[upper_k],
@@ -389,7 +423,7 @@ fn polygon<P: Probe>(
         }
     }
     if fan {
-        return Some(Err(corners[..count].to_vec()));
+        return Some(Err((corners[..count].to_vec(), centre)));
     }
     let p = [0, 1, 2, 3].map(position);
     let mut other_diagonal = better_by_normal(&p, e.normal);
@@ -419,21 +453,6 @@ fn polygon<P: Probe>(
     }
     // Two triangles only where they provably stay clear of every other triangle; else a fan
     // from the crossing, which always does (see `certify`).
-    // In cells with several patches the pieces must also keep to their patch's side.
-    let seps = [0, 1, 2, 3].map(|k| {
-        let (_, r) = refs[k];
-        let patch = table.patch_of_edge[r.mask as usize][edge_in_cell[k] as usize];
-        table.separators[r.mask as usize][patch as usize].as_slice()
-    });
-    let side = |k: usize, x: DVec3| {
-        // Local edge coordinates to ring cell k's unit coordinates.
-        let (du, dv) = around[k];
-        let mut unit = DVec3::ZERO;
-        unit[u] = x.x + du as f64;
-        unit[v] = x.y + dv as f64;
-        unit[axis] = x.z;
-        seps[k].iter().all(|s| s.value(unit) < -EPS)
-    };
     let side: Option<&dyn Fn(usize, DVec3) -> bool> = if seps.iter().any(|s| !s.is_empty()) {
         Some(&side)
     } else {
@@ -446,7 +465,7 @@ fn polygon<P: Probe>(
             other_diagonal,
         }))
     } else {
-        Some(Err(corners[..count].to_vec()))
+        Some(Err((corners[..count].to_vec(), centre)))
     }
 }
 

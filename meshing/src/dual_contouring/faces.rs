@@ -15,58 +15,70 @@
 
 use super::block::local_edge;
 use super::certify::EPS;
-use super::contour::{Cells, FaceKey};
-use super::patches::{NO_PATCH, Separator, edge_number, face_edges, face_segment, patch_table};
+use super::contour::{CellRef, Cells, FaceKey};
+use super::interlock::{inside_all, safe_point};
+use super::patches::{
+    Config, NO_PATCH, Seps, cut_corner, edge_number, face_edges, face_segment, patch_table,
+};
 use super::qef::Qef;
 use crate::marching_cubes::GridSpec;
-use crate::marching_cubes::table::{corner_offset, edge_corners, edge_origin};
+use crate::marching_cubes::table::{corner_offset, edge_origin};
 use glam::DVec3;
 
 /// The conditions on a point of one face: the upper face along `axis` of the lower cell.
-pub(crate) struct DualFace<'a> {
+pub(crate) struct DualFace {
     pub axis: usize,
     /// World position of the lower cell's lower corner.
     pub origin: DVec3,
     /// Separating half-spaces of the patch on each side (empty for a lone patch).
-    pub lower: &'a [Separator],
-    pub upper: &'a [Separator],
-    /// On an ambiguous face, the inside corner the segment cuts off (lower cell offsets).
+    pub lower: Seps,
+    pub upper: Seps,
+    /// On an ambiguous face, the corner the segment cuts off (lower cell offsets): an inside
+    /// corner, or an outside one where the face joins its inside corners.
     pub corner: Option<[usize; 3]>,
 }
 
-impl<'a> DualFace<'a> {
-    /// The face between `lower` (mask, global cell) and the cell above it along `axis`, for the
-    /// segment through the lower cell's edge `edge` (`edge_upper` in the upper cell's numbering).
+impl DualFace {
+    /// The face between `lower` (a cell and its global coordinates) and the cell `upper` above it
+    /// along `axis`, for the segment through the lower cell's edge `edge` (`edge_upper` in the
+    /// upper cell's numbering).
     pub fn new(
-        lower: (u8, [usize; 3]),
-        upper_mask: u8,
+        cells: &Cells,
+        lower: (&CellRef, [usize; 3]),
+        upper: &CellRef,
         axis: usize,
         edge: u8,
         edge_upper: u8,
         spec: &GridSpec,
-    ) -> DualFace<'a> {
+    ) -> DualFace {
         let table = patch_table();
-        let seps = |mask: u8, e: u8| -> &'a [Separator] {
-            let p = table.patch_of_edge[mask as usize][e as usize];
+        let seps = |r: &CellRef, e: u8| {
+            let p = table.get(r.config).patch_of_edge[e as usize];
             if p == NO_PATCH {
-                &[]
+                Seps::NONE
             } else {
-                &table.separators[mask as usize][p as usize]
+                cells.blocks[r.block].separators(r.local, p)
             }
         };
-        let ambiguous = table.ambiguous[lower.0 as usize] >> (2 * axis + 1) & 1 == 1;
-        let corner = ambiguous.then(|| {
-            let (a, b) = edge_corners(edge);
-            corner_offset(if lower.0 >> a & 1 == 1 { a } else { b })
-        });
+        let config: Config = lower.0.config;
+        let ambiguous = table.get(config).ambiguous >> (2 * axis + 1) & 1 == 1;
+        let corner = ambiguous.then(|| corner_offset(cut_corner(config, axis, 1, edge)));
         let c = lower.1;
         DualFace {
             axis,
             origin: spec.point(c[0], c[1], c[2]),
             lower: seps(lower.0, edge),
-            upper: seps(upper_mask, edge_upper),
+            upper: seps(upper, edge_upper),
             corner,
         }
+    }
+
+    /// True when `q` (cell units from the lower cell's corner) lies strictly on its patch's
+    /// side in both cells.
+    pub fn sides_ok(&self, q: DVec3) -> bool {
+        let mut up = q;
+        up[self.axis] -= 1.0;
+        inside_all(&self.lower, q) && inside_all(&self.upper, up)
     }
 
     /// True when `q` (cell units from the lower cell's corner, on the face) keeps the conditions.
@@ -80,10 +92,7 @@ impl<'a> DualFace<'a> {
         {
             return false;
         }
-        let mut up = q;
-        up[self.axis] -= 1.0;
-        self.lower.iter().all(|s| s.value(q) < -EPS)
-            && self.upper.iter().all(|s| s.value(up) < -EPS)
+        self.sides_ok(q)
     }
 
     /// True when the dual edge from `lo` (the lower cell's vertex) to `hi` crosses the face at a
@@ -97,9 +106,10 @@ impl<'a> DualFace<'a> {
     }
 }
 
-/// The crossing on the lower cell's edge `edge` of the face in `k`, from the face crossings kept
-/// by the block of the lower or of the upper cell (the edge's midpoint if neither kept it).
-fn crossing(k: &FaceKey, edge: u8, cells: &Cells, spec: &GridSpec) -> (DVec3, DVec3) {
+/// The crossing on the lower cell's edge `edge` of the face in `k`, its normal and the linear
+/// point, from the face crossings kept by the block of the lower or of the upper cell (the
+/// edge's midpoint if neither kept it).
+fn crossing(k: &FaceKey, edge: u8, cells: &Cells, spec: &GridSpec) -> (DVec3, DVec3, DVec3) {
     let axis = k.axis as usize;
     let (ea, o) = edge_origin(edge);
     let mut upper = k.cell;
@@ -111,14 +121,14 @@ fn crossing(k: &FaceKey, edge: u8, cells: &Cells, spec: &GridSpec) -> (DVec3, DV
         let mut s = [l[0] + o[0], l[1] + o[1], l[2] + o[2]];
         s[axis] -= lift;
         let key = local_edge(s, ea);
-        if let Ok(at) = b.face_crossings.binary_search_by_key(&key, |c| c.0) {
-            let (_, p, n) = b.face_crossings[at];
-            return (p, n);
+        if let Ok(at) = b.face_crossings.binary_search_by_key(&key, |c| c.key) {
+            let c = b.face_crossings[at];
+            return (c.point, c.normal, c.linear);
         }
     }
     let mut a = spec.point(k.cell[0] + o[0], k.cell[1] + o[1], k.cell[2] + o[2]);
     a[ea] += 0.5 * spec.cell;
-    (a, DVec3::ZERO)
+    (a, DVec3::ZERO, a)
 }
 
 /// Position of a face vertex (see the module docs).
@@ -133,11 +143,12 @@ pub(crate) fn face_vertex(k: &FaceKey, cells: &Cells, spec: &GridSpec) -> DVec3 
     let upper = cells
         .get(up)
         .expect("face vertices lie between surface cells");
-    let ambiguous = table.ambiguous[r.mask as usize] >> (2 * axis + 1) & 1 == 1;
+    let (lower, above) = (table.get(r.config), table.get(upper.config));
+    let ambiguous = lower.ambiguous >> (2 * axis + 1) & 1 == 1;
     let edges: Vec<u8> = face_edges(axis, 1)
         .into_iter()
-        .filter(|&e| table.patch_of_edge[r.mask as usize][e as usize] != NO_PATCH)
-        .filter(|&e| !ambiguous || face_segment(r.mask, axis, 1, e) == k.segment)
+        .filter(|&e| lower.patch_of_edge[e as usize] != NO_PATCH)
+        .filter(|&e| !ambiguous || face_segment(r.config, axis, 1, e) == k.segment)
         .collect();
     let upper_edge = |e: u8| {
         let (ea, mut o) = edge_origin(e);
@@ -145,18 +156,20 @@ pub(crate) fn face_vertex(k: &FaceKey, cells: &Cells, spec: &GridSpec) -> DVec3 
         edge_number(ea, o)
     };
     let face = DualFace::new(
-        (r.mask, k.cell),
-        upper.mask,
+        cells,
+        (&r, k.cell),
+        &upper,
         axis,
         edges[0],
         upper_edge(edges[0]),
         spec,
     );
-    let found: Vec<(DVec3, DVec3)> = edges.iter().map(|&e| crossing(k, e, cells, spec)).collect();
+    let found: Vec<(DVec3, DVec3, DVec3)> =
+        edges.iter().map(|&e| crossing(k, e, cells, spec)).collect();
     let unit = |p: DVec3| (p - face.origin) / spec.cell;
     let plane = spec.point(up[0], up[1], up[2])[axis];
-    let split = table.split_face[r.mask as usize] >> (2 * axis + 1) & 1 == 1
-        && table.split_face[upper.mask as usize] >> (2 * axis) & 1 == 1;
+    let split =
+        lower.split_face >> (2 * axis + 1) & 1 == 1 && above.split_face >> (2 * axis) & 1 == 1;
     if split {
         // Where the tangent lines at the two crossings meet within the face (a QEF of their
         // planes and the face plane), kept in the face.
@@ -169,7 +182,7 @@ pub(crate) fn face_vertex(k: &FaceKey, cells: &Cells, spec: &GridSpec) -> DVec3 
         let mut n = DVec3::ZERO;
         n[axis] = 1.0;
         q.add(flo, n);
-        for &(p, nrm) in &found {
+        for &(p, nrm, _) in &found {
             q.add(p, nrm);
         }
         let mut v = q.solve(flo, hi).0;
@@ -180,7 +193,10 @@ pub(crate) fn face_vertex(k: &FaceKey, cells: &Cells, spec: &GridSpec) -> DVec3 
             return v;
         }
     }
-    let mut v = 0.5 * (found[0].0 + found[found.len() - 1].0);
+    // Each crossing on its patch's side in both cells (an interlocked cell's plane may need the
+    // linear point instead), so their midpoint is too.
+    let safe = |(p, _, l): (DVec3, DVec3, DVec3)| safe_point(p, l, |p| face.sides_ok(unit(p)));
+    let mut v = 0.5 * (safe(found[0]) + safe(found[found.len() - 1]));
     v[axis] = plane;
     v
 }

@@ -38,6 +38,7 @@ mod contour;
 mod crossing;
 mod emit;
 mod faces;
+mod interlock;
 mod patches;
 mod qef;
 mod sources;

@@ -1,56 +1,152 @@
 //! The patch structure of a cell, generated from the marching-cubes case table: one dual vertex per
 //! connected surface patch (one per marching-cubes loop), the patch each crossing edge belongs to,
-//! and which faces need a split vertex.
+//! and which faces need a split vertex. Like the case table it is keyed by the cell's
+//! *configuration* (sign mask plus the asymptotic decider's joined bit per ambiguous face,
+//! [`crate::marching_cubes::table::config`]), so the patches are always the marching-cubes loops
+//! of the same samples.
 //!
-//! A cell face whose inside corners are diagonal (an ambiguous face) carries two surface segments.
-//! When both segments belong to one patch in the cell on each side, the two dual edges across that
-//! face would join the same two vertices (a doubled edge, four triangles on one mesh edge). Such a
-//! face gets one extra vertex per segment ([`PatchTable::split_face`]); the polygons around the
-//! face's edges then go through it and every mesh edge keeps exactly two triangles.
+//! A cell face whose inside corners are diagonal (an ambiguous face) carries two surface segments:
+//! each cuts off one inside corner, or one outside corner when the face joins its inside corners
+//! ([`cut_corner`]). When both segments belong to one patch in the cell on each side, the two dual
+//! edges across that face would join the same two vertices (a doubled edge, four triangles on one
+//! mesh edge). Such a face gets one extra vertex per segment ([`Patches::split_face`]); the
+//! polygons around the face's edges then go through it and every mesh edge keeps exactly two
+//! triangles.
 //!
 //! A cell with several patches also gets, for every pair of its patches, a plane that separates
-//! them for any crossing positions ([`PatchTable::separators`]): every edge of one patch lies in
+//! them for any crossing positions ([`Patches::separators`]): every edge of one patch lies in
 //! one closed half-space with at least one end strictly inside it (so every crossing strictly
 //! inside the edge is strictly inside the half-space), and the other patch's edges in the other.
 //! Keeping each patch's surface in its own open half-spaces keeps the patches apart.
 
-use crate::marching_cubes::table::{case_table, corner_offset, edge_corners, face_corners};
+use crate::marching_cubes::table::{
+    CONFIGS, case_table, corner_offset, edge_corners, face_corners,
+};
+use glam::DVec3;
 use std::sync::LazyLock;
 
 /// No patch: the edge does not cross.
 pub(crate) const NO_PATCH: u8 = u8::MAX;
 
-/// Per sign mask: the patches of a cell.
-pub(crate) struct PatchTable {
-    /// `patch_of_edge[mask][edge]`: the patch (loop) containing the crossing edge, or [`NO_PATCH`].
-    pub patch_of_edge: Vec<[u8; 12]>,
-    /// `edges[mask][patch]`: the cell edges of each patch.
-    pub edges: Vec<Vec<Vec<u8>>>,
-    /// `ambiguous[mask]`: bit `2·axis + side` set when that face has diagonal inside corners.
-    pub ambiguous: Vec<u8>,
-    /// `split_face[mask]`: bit `2·axis + side` set when that face is ambiguous and all four of its
-    /// edges belong to one patch of the cell.
-    pub split_face: Vec<u8>,
-    /// `separators[mask][patch]`: half-spaces `a · x < b` (`x` in cell units from the cell's
-    /// lower corner) holding every crossing of the patch strictly and every crossing of each
-    /// other patch of the cell strictly outside; empty for a lone patch.
-    pub separators: Vec<Vec<Vec<Separator>>>,
+/// A cell configuration: sign mask in the low byte, joined ambiguous faces (bit `2·axis + side`)
+/// above it, as [`crate::marching_cubes::table::cell_config`] computes it.
+pub(crate) type Config = u16;
+
+/// The patches of one configuration.
+pub(crate) struct Patches {
+    /// `patch_of_edge[edge]`: the patch (loop) containing the crossing edge, or [`NO_PATCH`].
+    pub patch_of_edge: [u8; 12],
+    /// `edges[patch]`: the cell edges of each patch.
+    pub edges: Vec<Vec<u8>>,
+    /// Bit `2·axis + side` set when that face has diagonal inside corners.
+    pub ambiguous: u8,
+    /// Bit `2·axis + side` set when that face is ambiguous and joins its inside corners.
+    pub joined: u8,
+    /// Bit `2·axis + side` set when that face is ambiguous and all four of its edges belong to
+    /// one patch of the cell.
+    pub split_face: u8,
+    /// `separators[patch]`: half-spaces `a · x < b` (`x` in cell units from the cell's lower
+    /// corner) holding every crossing of the patch strictly and every crossing of each other
+    /// patch of the cell strictly outside; empty for a lone patch, and for interlocked patches.
+    pub separators: Vec<Vec<Separator>>,
+    /// Two patches that no fixed plane separates, whose plane depends on the crossings.
+    pub interlock: Option<Interlock>,
 }
 
-/// A half-space `a · x < b` in cell units (see [`PatchTable::separators`]).
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+/// The patches of every configuration.
+pub(crate) struct PatchTable {
+    /// The distinct configurations (joined faces among the ambiguous ones).
+    distinct: Vec<Patches>,
+    /// `slot[config]`: index into `distinct` (joined bits of faces that are not ambiguous are
+    /// ignored, as the case table does).
+    slot: Vec<u16>,
+}
+
+impl PatchTable {
+    /// The patches of configuration `config`.
+    #[inline]
+    pub fn get(&self, config: Config) -> &Patches {
+        &self.distinct[usize::from(self.slot[usize::from(config)])]
+    }
+}
+
+/// A half-space `a · x < b` in cell units (see [`Patches::separators`]).
+#[derive(Debug, Clone, Copy, PartialEq)]
 pub(crate) struct Separator {
-    pub a: [i8; 3],
-    pub b: i8,
+    pub a: DVec3,
+    pub b: f64,
 }
 
 impl Separator {
     /// `a · x − b` (negative inside).
-    pub fn value(&self, x: glam::DVec3) -> f64 {
-        f64::from(self.a[0]) * x.x + f64::from(self.a[1]) * x.y + f64::from(self.a[2]) * x.z
-            - f64::from(self.b)
+    pub fn value(&self, x: DVec3) -> f64 {
+        self.a.x * x.x + self.a.y * x.y + self.a.z * x.z - self.b
     }
 
+    /// The complementary half-space (up to the plane itself).
+    pub fn flipped(&self) -> Separator {
+        Separator {
+            a: -self.a,
+            b: -self.b,
+        }
+    }
+}
+
+/// The separating half-spaces of one patch of one cell (at most three: a cell has at most four
+/// patches).
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct Seps {
+    list: [Separator; 3],
+    len: u8,
+}
+
+impl Seps {
+    /// No separator (a lone patch).
+    pub const NONE: Seps = Seps {
+        list: [Separator {
+            a: DVec3::ZERO,
+            b: 0.0,
+        }; 3],
+        len: 0,
+    };
+
+    /// The half-spaces in `s` (at most three).
+    pub fn new(s: &[Separator]) -> Seps {
+        let mut out = Seps::NONE;
+        out.list[..s.len()].copy_from_slice(s);
+        out.len = s.len() as u8;
+        out
+    }
+}
+
+impl std::ops::Deref for Seps {
+    type Target = [Separator];
+
+    fn deref(&self) -> &[Separator] {
+        &self.list[..usize::from(self.len)]
+    }
+}
+
+/// Two patches of a configuration that no plane separates for every crossing position: the
+/// asymptotic decider joins the inside corners on both faces across one axis and separates them
+/// on the four faces along it (or the reverse). Patch `low` holds the four edges of face
+/// (`axis`, 0) and two edges along `axis`, the other patch the four edges of face (`axis`, 1) and
+/// the other two edges along `axis`; in projection along `axis` the two pairs lie on crossing
+/// diagonals. Their plane is found per cell from the crossings ([`super::interlock`]).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(crate) struct Interlock {
+    pub axis: u8,
+    pub low: u8,
+}
+
+/// A plane with small integer coefficients: `a · x < b` in cell units.
+#[derive(Debug, Clone, Copy)]
+struct IntPlane {
+    a: [i8; 3],
+    b: i8,
+}
+
+impl IntPlane {
     fn at_corner(&self, c: u8) -> i32 {
         let o = corner_offset(c);
         (0..3)
@@ -70,7 +166,7 @@ impl Separator {
 }
 
 /// A plane with small integer coefficients separating the edges of two patches: `a` strictly
-/// negative side, `b` strictly positive side (as [`Separator::holds`] says).
+/// negative side, `b` strictly positive side (as [`IntPlane::holds`] says).
 fn separator(a: &[u8], b: &[u8]) -> Option<Separator> {
     for range in [1i8, 2] {
         let span = -range..=range;
@@ -81,9 +177,12 @@ fn separator(a: &[u8], b: &[u8]) -> Option<Separator> {
                         continue;
                     }
                     for c in -3 * range..=3 * range {
-                        let s = Separator { a: [x, y, z], b: c };
+                        let s = IntPlane { a: [x, y, z], b: c };
                         if s.holds(a, 1) && s.holds(b, -1) {
-                            return Some(s);
+                            return Some(Separator {
+                                a: DVec3::new(f64::from(x), f64::from(y), f64::from(z)),
+                                b: f64::from(c),
+                            });
                         }
                     }
                 }
@@ -91,6 +190,25 @@ fn separator(a: &[u8], b: &[u8]) -> Option<Separator> {
         }
     }
     None
+}
+
+/// The interlock of two patches without a separator, when they have that shape.
+fn interlock(of: &[u8; 12], loops: &[Vec<u8>]) -> Option<Interlock> {
+    if loops.len() != 2 {
+        return None;
+    }
+    (0..3).find_map(|axis| {
+        let face = |side: u8| {
+            let p = face_edges(axis, side).map(|e| of[e as usize]);
+            p.iter().all(|&x| x == p[0]).then_some(p[0])
+        };
+        let (low, high) = (face(0)?, face(1)?);
+        let along = |p: u8| (0..4).filter(|&j| of[4 * axis + j] == p).count();
+        (low != high && along(low) == 2 && along(high) == 2).then_some(Interlock {
+            axis: axis as u8,
+            low,
+        })
+    })
 }
 
 static TABLE: LazyLock<PatchTable> = LazyLock::new(build);
@@ -127,74 +245,101 @@ pub(crate) fn face_edges(axis: usize, side: u8) -> [u8; 4] {
 
 fn build() -> PatchTable {
     let mc = case_table();
-    let mut patch_of_edge = Vec::with_capacity(256);
-    let mut edges = Vec::with_capacity(256);
-    let mut ambiguous = Vec::with_capacity(256);
-    let mut split_face = Vec::with_capacity(256);
-    let mut separators = Vec::with_capacity(256);
+    let mut distinct = Vec::new();
+    let mut slot = vec![0u16; CONFIGS];
     for mask in 0..256usize {
-        let mut of = [NO_PATCH; 12];
-        for (p, l) in mc.loops[mask].iter().enumerate() {
-            for &e in l {
-                of[e as usize] = p as u8;
-            }
+        let amb = mc.ambiguous[mask];
+        let first = distinct.len();
+        // Each subset of the ambiguous faces joined, in increasing order of its bits.
+        for joined in (0..64u8).filter(|j| j & !amb == 0) {
+            distinct.push(patches(mask | usize::from(joined) << 8));
         }
-        let inside = |c: u8| mask >> c & 1 == 1;
-        let (mut amb, mut split) = (0u8, 0u8);
-        for axis in 0..3 {
-            for side in 0..2u8 {
-                let f = face_corners(axis, side);
-                let diagonal = inside(f[0]) == inside(f[2])
-                    && inside(f[1]) == inside(f[3])
-                    && inside(f[0]) != inside(f[1]);
-                if diagonal {
-                    let bit = 1 << (2 * axis + side as usize);
-                    amb |= bit;
-                    let fe = face_edges(axis, side);
-                    if fe.iter().all(|&e| of[e as usize] == of[fe[0] as usize]) {
-                        split |= bit;
-                    }
-                }
-            }
+        for joined in 0..64u8 {
+            // The rank of `joined & amb` among the subsets of `amb`.
+            let rank = (0..64u8)
+                .filter(|j| j & !amb == 0 && *j < joined & amb)
+                .count();
+            slot[mask | usize::from(joined) << 8] = (first + rank) as u16;
         }
-        let loops = &mc.loops[mask];
-        let mut seps = vec![Vec::new(); loops.len()];
-        for i in 0..loops.len() {
-            for j in i + 1..loops.len() {
-                // Every pair of patches of a marching-cubes case has one (tested below); a
-                // missing one would leave that pair unseparated, never panic.
-                if let Some(s) = separator(&loops[i], &loops[j]) {
-                    seps[i].push(s);
-                    seps[j].push(Separator {
-                        a: s.a.map(|x| -x),
-                        b: -s.b,
-                    });
-                }
-            }
-        }
-        separators.push(seps);
-        patch_of_edge.push(of);
-        edges.push(mc.loops[mask].clone());
-        ambiguous.push(amb);
-        split_face.push(split);
     }
-    PatchTable {
-        patch_of_edge,
-        edges,
-        ambiguous,
-        split_face,
-        separators,
+    PatchTable { distinct, slot }
+}
+
+/// The patches of one distinct configuration (joined faces all ambiguous).
+fn patches(config: usize) -> Patches {
+    let mc = case_table();
+    let mask = config & 255;
+    let loops = &mc.loops[config];
+    let mut of = [NO_PATCH; 12];
+    for (p, l) in loops.iter().enumerate() {
+        for &e in l {
+            of[e as usize] = p as u8;
+        }
+    }
+    let amb = mc.ambiguous[mask];
+    let mut split = 0u8;
+    for axis in 0..3 {
+        for side in 0..2u8 {
+            let bit = 1 << (2 * axis + side as usize);
+            let fe = face_edges(axis, side);
+            if amb & bit != 0 && fe.iter().all(|&e| of[e as usize] == of[fe[0] as usize]) {
+                split |= bit;
+            }
+        }
+    }
+    let mut seps = vec![Vec::new(); loops.len()];
+    let mut unseparated = false;
+    for i in 0..loops.len() {
+        for j in i + 1..loops.len() {
+            // Every pair of patches of every configuration has one, except interlocked pairs
+            // (tested below).
+            match separator(&loops[i], &loops[j]) {
+                Some(s) => {
+                    seps[i].push(s);
+                    seps[j].push(s.flipped());
+                }
+                None => unseparated = true,
+            }
+        }
+    }
+    Patches {
+        patch_of_edge: of,
+        edges: loops.clone(),
+        ambiguous: amb,
+        joined: (config >> 8) as u8,
+        split_face: split,
+        separators: seps,
+        interlock: if unseparated {
+            interlock(&of, loops)
+        } else {
+            None
+        },
+    }
+}
+
+/// On an ambiguous face (`axis`, `side`) of a cell in `config`, the corner that the segment
+/// through `edge` (an edge of the face) cuts off: the edge's inside end, or its outside end when
+/// the face joins its inside corners.
+pub(crate) fn cut_corner(config: Config, axis: usize, side: u8, edge: u8) -> u8 {
+    let joined = config >> (8 + 2 * axis + side as usize) & 1 == 1;
+    let (a, b) = edge_corners(edge);
+    if (config >> a & 1 == 1) != joined {
+        a
+    } else {
+        b
     }
 }
 
 /// On an ambiguous face, the segment (0 or 1) an edge of the face belongs to: the segment cutting
-/// off the inside corner the edge touches, numbered by the lower of the two inside corners.
-pub(crate) fn face_segment(mask: u8, axis: usize, side: u8, edge: u8) -> u8 {
+/// off the corner [`cut_corner`] names, numbered by the lower of the two cut-off corners (the
+/// inside corners, or the outside ones on a joined face). Both cells sharing the face number its
+/// segments alike.
+pub(crate) fn face_segment(config: Config, axis: usize, side: u8, edge: u8) -> u8 {
+    let joined = config >> (8 + 2 * axis + side as usize) & 1 == 1;
     let f = face_corners(axis, side);
-    let mut ins: Vec<u8> = f.iter().copied().filter(|&c| mask >> c & 1 == 1).collect();
-    ins.sort_unstable();
-    let (a, b) = edge_corners(edge);
-    u8::from(!(a == ins[0] || b == ins[0]))
+    let cut = |c: u8| (config >> c & 1 == 1) != joined;
+    let lowest = f.iter().copied().filter(|&c| cut(c)).min();
+    u8::from(lowest != Some(cut_corner(config, axis, side, edge)))
 }
 
 #[cfg(test)]
@@ -223,66 +368,164 @@ mod tests {
         }
     }
 
-    /// Every crossing edge has a patch; split faces exist (the single-loop ambiguous cases) and
-    /// each segment of an ambiguous face joins two edges of that face touching one inside corner.
+    /// Every distinct configuration: each mask with each subset of its ambiguous faces joined.
+    fn configs() -> impl Iterator<Item = Config> {
+        (0..256u16).flat_map(|mask| {
+            let amb = u16::from(case_table().ambiguous[usize::from(mask)]);
+            (0..64u16)
+                .filter(move |j| j & !amb == 0)
+                .map(move |j| mask | j << 8)
+        })
+    }
+
+    /// Every configuration, distinct or not, finds the patches of the case table's loops, with
+    /// joined bits only on ambiguous faces.
+    #[test]
+    fn every_configuration_has_the_case_tables_loops() {
+        let (t, mc) = (patch_table(), case_table());
+        assert_eq!(t.distinct.len(), configs().count());
+        for config in 0..CONFIGS {
+            let p = t.get(config as Config);
+            assert_eq!(p.edges, mc.loops[config], "config {config:#x}");
+            assert_eq!(p.ambiguous, mc.ambiguous[config & 255]);
+            assert_eq!(p.joined, (config >> 8) as u8 & p.ambiguous, "{config:#x}");
+        }
+    }
+
+    /// Every crossing edge has a patch; split faces exist (the single-loop ambiguous cases, with
+    /// and without joined faces) and each segment of an ambiguous face, as [`face_segment`]
+    /// numbers them, is a side of a loop: two edges of that face around the corner
+    /// [`cut_corner`] names, consecutive in one loop.
     #[test]
     fn patches_cover_crossing_edges_and_splits_occur() {
         let t = patch_table();
-        let mut splits = 0;
-        for mask in 0..256usize {
+        let (mut splits, mut joined_splits) = (0, 0);
+        for config in configs() {
+            let p = t.get(config);
+            let mask = config & 255;
             for e in 0..12u8 {
                 let (a, b) = edge_corners(e);
                 let crossing = (mask >> a & 1) != (mask >> b & 1);
-                assert_eq!(t.patch_of_edge[mask][e as usize] != NO_PATCH, crossing);
+                assert_eq!(p.patch_of_edge[e as usize] != NO_PATCH, crossing);
             }
-            splits += t.split_face[mask].count_ones();
+            splits += p.split_face.count_ones();
+            joined_splits += (p.split_face & p.joined).count_ones();
+            let sides: Vec<(u8, u8)> = (p.edges.iter())
+                .flat_map(|l| (0..l.len()).map(move |k| (l[k], l[(k + 1) % l.len()])))
+                .collect();
             for axis in 0..3 {
                 for side in 0..2u8 {
-                    if t.ambiguous[mask] >> (2 * axis + side as usize) & 1 == 1 {
-                        let segs: Vec<u8> = face_edges(axis, side)
-                            .iter()
-                            .map(|&e| face_segment(mask as u8, axis, side, e))
+                    if p.ambiguous >> (2 * axis + side as usize) & 1 == 0 {
+                        continue;
+                    }
+                    let fe = face_edges(axis, side);
+                    for s in 0..2 {
+                        let seg: Vec<u8> = (fe.iter().copied())
+                            .filter(|&e| face_segment(config, axis, side, e) == s)
                             .collect();
-                        assert_eq!(segs.iter().filter(|&&s| s == 0).count(), 2);
+                        assert_eq!(seg.len(), 2, "config {config:#x}");
+                        let (c0, c1) = (
+                            cut_corner(config, axis, side, seg[0]),
+                            cut_corner(config, axis, side, seg[1]),
+                        );
+                        assert_eq!(c0, c1, "config {config:#x}");
+                        let (e0, e1) = (seg[0], seg[1]);
+                        assert!(
+                            sides.contains(&(e0, e1)) || sides.contains(&(e1, e0)),
+                            "config {config:#x}: face {axis} {side} segment {s}"
+                        );
                     }
                 }
             }
         }
-        assert!(splits > 0);
+        assert!(splits > 0 && joined_splits > 0);
     }
 
-    /// Every pair of patches of every case has a separating plane, and it separates: crossings
-    /// anywhere strictly inside the edges land strictly on their own patch's side.
+    /// The two cells sharing an ambiguous face number its segments alike: the upper face of any
+    /// configuration against the lower face of a configuration with the same face corners and
+    /// decision.
+    #[test]
+    fn both_sides_of_a_face_number_its_segments_alike() {
+        for config in configs() {
+            let mask = config & 255;
+            for axis in 0..3 {
+                let bit = 2 * axis + 1;
+                if u16::from(case_table().ambiguous[usize::from(mask)]) >> bit & 1 == 0 {
+                    continue;
+                }
+                // The cell above: its lower face has this cell's upper corners (both layers).
+                let upper_face: u16 = (0..8u16)
+                    .filter(|&c| c >> axis & 1 == 1 && mask >> c & 1 == 1)
+                    .fold(0, |m, c| m | 1 << c | 1 << (c ^ 1 << axis));
+                let upper = upper_face | (config >> (8 + bit) & 1) << (8 + 2 * axis);
+                for e in face_edges(axis, 1) {
+                    let (ea, mut o) = edge_origin(e);
+                    o[axis] = 0;
+                    let eu = edge_number(ea, o);
+                    assert_eq!(
+                        face_segment(config, axis, 1, e),
+                        face_segment(upper, axis, 0, eu),
+                        "config {config:#x} axis {axis}"
+                    );
+                }
+            }
+        }
+    }
+
+    /// Every pair of patches of every configuration has a separating plane, and it separates:
+    /// crossings anywhere strictly inside the edges land strictly on their own patch's side.
     #[test]
     fn every_pair_of_patches_is_separated() {
         let t = patch_table();
-        let mut pairs = 0;
-        for mask in 0..256usize {
-            let n = t.edges[mask].len();
+        let (mut pairs, mut joined_pairs) = (0, 0);
+        let mut interlocked = 0;
+        for config in configs() {
+            let c = t.get(config);
+            let n = c.edges.len();
+            if let Some(i) = c.interlock {
+                // No fixed plane: both faces across the axis joined and the four along it
+                // separated, or the reverse; the edges along the axis of each patch lie on a
+                // diagonal of the cell's cross-section.
+                interlocked += 1;
+                assert_eq!(n, 2);
+                assert!(c.separators.iter().all(Vec::is_empty));
+                let axis = usize::from(i.axis);
+                let across = 0b11 << (2 * axis);
+                let flags = (c.joined & across, c.joined & !across);
+                assert!(flags == (across, 0) || flags == (0, 0b111111 & !across));
+                for p in 0..2u8 {
+                    let along: Vec<u8> = (0..4u8)
+                        .filter(|&j| c.patch_of_edge[4 * axis + j as usize] == p)
+                        .collect();
+                    assert!(along == [0, 3] || along == [1, 2], "config {config:#x}");
+                }
+                continue;
+            }
             for p in 0..n {
-                assert_eq!(t.separators[mask][p].len(), n - 1, "mask {mask} patch {p}");
-                pairs += t.separators[mask][p].len();
-                for s in &t.separators[mask][p] {
-                    for &e in &t.edges[mask][p] {
+                assert_eq!(c.separators[p].len(), n - 1, "config {config:#x} patch {p}");
+                pairs += c.separators[p].len();
+                if c.joined != 0 {
+                    joined_pairs += c.separators[p].len();
+                }
+                for s in &c.separators[p] {
+                    for &e in &c.edges[p] {
                         let (axis, o) = edge_origin(e);
                         for f in [1e-9, 0.5, 1.0 - 1e-9] {
                             let mut x = glam::DVec3::new(o[0] as f64, o[1] as f64, o[2] as f64);
                             x[axis] += f;
-                            assert!(s.value(x) < 0.0, "mask {mask} patch {p} edge {e}");
+                            assert!(s.value(x) < 0.0, "config {config:#x} patch {p} edge {e}");
                         }
                     }
-                    // The same plane, negated, is listed for exactly one other patch.
-                    let flipped = Separator {
-                        a: s.a.map(|x| -x),
-                        b: -s.b,
-                    };
+                    // The same plane, negated, is listed for another patch.
                     let owners = (0..n)
-                        .filter(|&q| q != p && t.separators[mask][q].contains(&flipped))
+                        .filter(|&q| q != p && c.separators[q].contains(&s.flipped()))
                         .count();
-                    assert!(owners >= 1, "mask {mask} patch {p}");
+                    assert!(owners >= 1, "config {config:#x} patch {p}");
                 }
             }
         }
-        assert!(pairs > 0);
+        assert!(pairs > 0 && joined_pairs > 0);
+        // The checkerboard masks with the faces across one axis decided unlike those along it.
+        assert_eq!(interlocked, 12);
     }
 }
