@@ -9,8 +9,7 @@
 
 use super::certify::{SEPARATOR_MARGIN, VERTEX_MARGIN};
 use super::crossing::{CrossingScratch, DcField, EdgeQuery, refine};
-use super::interlock::{AxisEdge, inside_all, linear_point, plane, safe_point};
-use super::patches::{Config, NO_PATCH, Separator, Seps, face_edges, patch_table};
+use super::patches::{Config, NO_PATCH, Separator, face_edges, patch_table, reachable};
 use super::qef::Qef;
 use crate::marching_cubes::table::{cell_config, edge_origin};
 use crate::marching_cubes::{GridSpec, inside};
@@ -38,19 +37,6 @@ pub(crate) struct OwnedEdge {
     pub point: DVec3,
     /// Unit normal there.
     pub normal: DVec3,
-    /// The zero of the linear interpolant of the samples ([`linear_point`]).
-    pub linear: DVec3,
-}
-
-/// A crossing kept for face vertices.
-#[derive(Debug, Clone, Copy)]
-pub(crate) struct FaceCrossing {
-    /// Local edge id.
-    pub key: u16,
-    pub point: DVec3,
-    pub normal: DVec3,
-    /// The zero of the linear interpolant of the samples ([`linear_point`]).
-    pub linear: DVec3,
 }
 
 /// What one block contributes.
@@ -76,10 +62,7 @@ pub(crate) struct Block {
     /// Crossings on ambiguous faces of the block's cells and on every edge of its cells with
     /// several patches (where dual edges may be routed through face vertices), by local edge id
     /// (sorted, unique).
-    pub face_crossings: Vec<FaceCrossing>,
-    /// The plane of each interlocked cell (by local cell index, sorted): the low patch's
-    /// half-space ([`super::interlock`]).
-    pub planes: Vec<(u32, Separator)>,
+    pub face_crossings: Vec<(u16, DVec3, DVec3)>,
     /// Inside flags of the samples (kept for adaptive simplification only).
     pub inside: Vec<u8>,
     /// Samples evaluated.
@@ -95,23 +78,6 @@ impl Block {
     pub fn cell_index(&self, c: [usize; 3]) -> usize {
         c[0] + self.extent[0] * (c[1] + self.extent[1] * c[2])
     }
-
-    /// The half-spaces patch `patch` of local cell `local` keeps to (in the cell's unit
-    /// coordinates): the table's, or the plane of an interlocked cell.
-    pub fn separators(&self, local: usize, patch: u8) -> Seps {
-        let c = patch_table().get(self.configs[local]);
-        match c.interlock {
-            None => Seps::new(&c.separators[usize::from(patch)]),
-            Some(i) => {
-                let at = self
-                    .planes
-                    .binary_search_by_key(&(local as u32), |p| p.0)
-                    .expect("every interlocked cell has its plane");
-                let s = self.planes[at].1;
-                Seps::new(&[if patch == i.low { s } else { s.flipped() }])
-            }
-        }
-    }
 }
 
 /// Per-thread buffers.
@@ -121,7 +87,6 @@ pub(crate) struct BlockScratch<S> {
     queries: Vec<EdgeQuery>,
     keys: Vec<u32>,
     crossings: Vec<(DVec3, DVec3)>,
-    linear: Vec<DVec3>,
     search: CrossingScratch,
     pub field: S,
 }
@@ -182,9 +147,6 @@ pub(crate) fn build<F: DcField>(
         &mut s.field,
     );
     let evaluation_s = start.elapsed().as_secs_f64();
-    s.linear.clear();
-    s.linear
-        .extend(s.queries.iter().map(|q| linear_point(q.a, q.b, q.fa, q.fb)));
     let table = patch_table();
     let cells = e[0] * e[1] * e[2];
     let mut b = Block {
@@ -213,8 +175,10 @@ pub(crate) fn build<F: DcField>(
                     b.configs[ci] = Config::from(mask);
                     continue;
                 }
-                let config = cell_config(usize::from(mask), |c| values[base + corner[c as usize]]);
-                let config = config as Config;
+                // The marching-cubes configuration, decided on the same f32 samples.
+                let config =
+                    cell_config(usize::from(mask), |c| values[base + corner[c as usize]]) as Config;
+                debug_assert!(reachable(config), "the decider never gives {config:#x}");
                 b.configs[ci] = config;
                 let cell = table.get(config);
                 b.first[ci] = b.vertices.len() as u32;
@@ -222,31 +186,13 @@ pub(crate) fn build<F: DcField>(
                 let hi = lo + DVec3::splat(spec.cell);
                 let patches = &cell.edges;
                 let inner = DVec3::splat(VERTEX_MARGIN * spec.cell);
-                let unit = |p: DVec3| (p - lo) / spec.cell;
-                // The crossing and linear point of a cell edge.
-                let at = |edge: u8| {
-                    let (axis, o) = edge_origin(edge);
-                    let q = s.ids[3 * (base + o[0] + nx * o[1] + nxy * o[2]) + axis] as usize;
-                    (s.crossings[q], s.linear[q])
-                };
-                if let Some(il) = cell.interlock {
-                    let axis = usize::from(il.axis);
-                    let edges = [0, 1, 2, 3].map(|j| {
-                        let edge = (4 * axis + j) as u8;
-                        let ((p, _), l) = at(edge);
-                        AxisEdge {
-                            real: unit(p),
-                            linear: unit(l),
-                            low: cell.patch_of_edge[usize::from(edge)] == il.low,
-                        }
-                    });
-                    b.planes.push((ci as u32, plane(il, &edges)));
-                }
                 for (pi, patch) in patches.iter().enumerate() {
                     let mut q = Qef::new(lo + half);
                     let (mut plo, mut phi) = (hi, lo);
                     for &edge in patch {
-                        let ((p, nrm), _) = at(edge);
+                        let (axis, o) = edge_origin(edge);
+                        let idx = base + o[0] + nx * o[1] + nxy * o[2];
+                        let (p, nrm) = s.crossings[s.ids[3 * idx + axis] as usize];
                         q.add(p, nrm);
                         plo = plo.min(p);
                         phi = phi.max(p);
@@ -259,20 +205,8 @@ pub(crate) fn build<F: DcField>(
                     } else {
                         let clo = plo.max(lo + inner);
                         let v = q.solve(clo, phi.min(hi - inner).max(clo)).0;
-                        let seps = b.separators(ci, pi as u8);
-                        let mass = if cell.interlock.is_some() {
-                            // The mean of the points of the patch's edges on its side.
-                            let sum: DVec3 = (patch.iter())
-                                .map(|&edge| {
-                                    let ((p, _), l) = at(edge);
-                                    safe_point(p, l, |p| inside_all(&seps, unit(p)))
-                                })
-                                .sum();
-                            sum / patch.len() as f64
-                        } else {
-                            q.reference + q.mass / f64::from(q.count.max(1))
-                        };
-                        separated(v, mass, lo, spec.cell, &seps)
+                        let mass = q.reference + q.mass / f64::from(q.count.max(1));
+                        separated(v, mass, lo, spec.cell, &cell.separators[pi])
                     };
                     b.vertices.push(v);
                     if keep {
@@ -315,14 +249,8 @@ pub(crate) fn build<F: DcField>(
                 (key >> 10) as usize,
             ];
             let idx = l[0] + nx * l[1] + nxy * l[2];
-            let q = s.ids[3 * idx + (key & 3) as usize] as usize;
-            let (point, normal) = s.crossings[q];
-            FaceCrossing {
-                key,
-                point,
-                normal,
-                linear: s.linear[q],
-            }
+            let (p, nrm) = s.crossings[s.ids[3 * idx + (key & 3) as usize] as usize];
+            (key, p, nrm)
         })
         .collect();
     // Owned crossing edges.
@@ -347,7 +275,6 @@ pub(crate) fn build<F: DcField>(
             lower_inside: ins[idx] == 1,
             point: p,
             normal: nrm,
-            linear: s.linear[q],
         });
     }
     if keep {

@@ -291,6 +291,59 @@ mod tests {
         );
     }
 
+    /// On every face of every crossing edge of every configuration the decider gives, the kind
+    /// names the edge that the case table's loops join to `E` on that face.
+    #[test]
+    fn face_kinds_follow_the_case_table() {
+        use super::super::patches::{Config, edge_number, patch_table, reachable};
+        use crate::marching_cubes::table::{CONFIGS, corner_offset, edge_corners, edge_origin};
+        let edge = |a: u8, b: u8| {
+            let along = (a ^ b).trailing_zeros() as usize;
+            edge_number(along, corner_offset(a & b))
+        };
+        let mut ambiguous = [0usize; 2];
+        for config in (0..CONFIGS as Config).filter(|&c| reachable(c)) {
+            let p = patch_table().get(config);
+            if (config >> 8) as u8 & !p.ambiguous != 0 {
+                continue; // not a distinct configuration
+            }
+            let sides: Vec<(u8, u8)> = (p.edges.iter())
+                .flat_map(|l| (0..l.len()).map(move |k| (l[k], l[(k + 1) % l.len()])))
+                .collect();
+            let inside = |c: u8| config >> c & 1 == 1;
+            for e in (0..12u8).filter(|&e| p.patch_of_edge[usize::from(e)] != u8::MAX) {
+                let (a, _) = edge_origin(e);
+                let (e0, e1) = edge_corners(e);
+                for w in (0..3).filter(|&w| w != a) {
+                    // The face spanned by E and axis w: the one across the third axis.
+                    let fa = 3 - a - w;
+                    let bit = 2 * fa + usize::from(e0 >> fa & 1);
+                    let (f0, f1) = (e0 ^ 1 << w, e1 ^ 1 << w);
+                    let kind = FaceKind::of(
+                        inside(e0),
+                        inside(e1),
+                        inside(f0),
+                        inside(f1),
+                        p.joined >> bit & 1 == 1,
+                    );
+                    let partner = match kind {
+                        FaceKind::Far => edge(f0, f1),
+                        FaceKind::Low | FaceKind::AmbiguousLow => edge(e0, f0),
+                        FaceKind::High | FaceKind::AmbiguousHigh => edge(e1, f1),
+                    };
+                    if kind.ambiguous() {
+                        ambiguous[usize::from(p.joined >> bit & 1)] += 1;
+                    }
+                    assert!(
+                        sides.contains(&(e, partner)) || sides.contains(&(partner, e)),
+                        "config {config:#x} edge {e} face {bit}: {kind:?}"
+                    );
+                }
+            }
+        }
+        assert!(ambiguous[0] > 0 && ambiguous[1] > 0);
+    }
+
     /// A flat quad around the edge (the plane z = 0.5) is certified either way; a quad whose
     /// diagonal passes beyond the off-diagonal vertex (a fold) is not.
     #[test]

@@ -7,7 +7,6 @@ use super::block::{Block, NO_VERTEX, OwnedEdge};
 use super::certify::{EPS, EdgeFrame, FaceKind, RingFace, certify};
 use super::crossing::DcField;
 use super::faces::{DualFace, face_vertex};
-use super::interlock::safe_point;
 use super::patches::{Config, NO_PATCH, edge_number, face_segment, patch_table};
 use crate::marching_cubes::GridSpec;
 use glam::DVec3;
@@ -205,7 +204,7 @@ pub(crate) fn assemble<P: Probe>(
             for e in &b.edges {
                 match polygon(b, e, &cells, spec, probe, scratch) {
                     Some(Ok(q)) => quads.push(q),
-                    Some(Err(fan)) => specials.push(fan),
+                    Some(Err(corners)) => specials.push((corners, e.point)),
                     None => {}
                 }
             }
@@ -256,8 +255,8 @@ pub(crate) fn assemble<P: Probe>(
 }
 
 /// The polygon around owned edge `e`: `Ok` for a quad certified as two triangles, `Err` with its
-/// corners (cell vertices and any face vertices) and centre for a fan from a point of the edge,
-/// `None` when a cell around it lies outside the grid.
+/// corners (cell vertices and any face vertices) for a fan from the crossing, `None` when a cell
+/// around it lies outside the grid.
 fn polygon<P: Probe>(
     b: &Block,
     e: &OwnedEdge,
@@ -265,7 +264,7 @@ fn polygon<P: Probe>(
     spec: &GridSpec,
     probe: &P,
     scratch: &mut P::Scratch,
-) -> Option<Result<Quad, (Vec<Corner>, DVec3)>> {
+) -> Option<Result<Quad, Vec<Corner>>> {
     let table = patch_table();
     let axis = e.axis as usize;
     let (u, v) = ((axis + 1) % 3, (axis + 2) % 3);
@@ -319,29 +318,6 @@ fn polygon<P: Probe>(
         r.config >> (o[0] | o[1] << 1 | o[2] << 2) & 1 == 1
     };
     let several = |r: &CellRef| table.get(r.config).edges.len() > 1;
-    // In cells with several patches the pieces must keep to their patch's side.
-    let seps = [0, 1, 2, 3].map(|k| {
-        let (_, r) = refs[k];
-        let patch = table.get(r.config).patch_of_edge[edge_in_cell[k] as usize];
-        cells.blocks[r.block].separators(r.local, patch)
-    });
-    let side = |k: usize, x: DVec3| {
-        // Local edge coordinates to ring cell k's unit coordinates.
-        let (du, dv) = around[k];
-        let mut unit = DVec3::ZERO;
-        unit[u] = x.x + du as f64;
-        unit[v] = x.y + dv as f64;
-        unit[axis] = x.z;
-        seps[k].iter().all(|s| s.value(unit) < -EPS)
-    };
-    // A fan's centre: the crossing, unless it lies on the wrong side of an interlocked cell's
-    // plane; then the linear point, which lies on the right side of every such plane.
-    let centre = if (0..4).any(|k| table.get(refs[k].1.config).interlock.is_some()) {
-        let c = frame.local(e.point);
-        safe_point(e.point, e.linear, |_| (0..4).all(|k| side(k, c)))
-    } else {
-        e.point
-    };
     // At most four cell vertices and four face vertices; a vector only for fans.
     let mut corners = [Corner::Vertex(0); 8];
     let mut count = 0;
@@ -407,9 +383,8 @@ fn polygon<P: Probe>(
             count += 1;
         } else if ambiguous || several(&lower) || several(&upper) {
             let face = DualFace::new(
-                cells,
-                (&lower, lower_cell),
-                &upper,
+                (lower.config, lower_cell),
+                upper.config,
                 fa,
                 edge_in_cell[lower_k],
                 edge_in_cell[upper_k],
@@ -423,7 +398,7 @@ fn polygon<P: Probe>(
         }
     }
     if fan {
-        return Some(Err((corners[..count].to_vec(), centre)));
+        return Some(Err(corners[..count].to_vec()));
     }
     let p = [0, 1, 2, 3].map(position);
     let mut other_diagonal = better_by_normal(&p, e.normal);
@@ -453,6 +428,21 @@ fn polygon<P: Probe>(
     }
     // Two triangles only where they provably stay clear of every other triangle; else a fan
     // from the crossing, which always does (see `certify`).
+    // In cells with several patches the pieces must also keep to their patch's side.
+    let seps = [0, 1, 2, 3].map(|k| {
+        let (_, r) = refs[k];
+        let c = table.get(r.config);
+        c.separators[c.patch_of_edge[edge_in_cell[k] as usize] as usize].as_slice()
+    });
+    let side = |k: usize, x: DVec3| {
+        // Local edge coordinates to ring cell k's unit coordinates.
+        let (du, dv) = around[k];
+        let mut unit = DVec3::ZERO;
+        unit[u] = x.x + du as f64;
+        unit[v] = x.y + dv as f64;
+        unit[axis] = x.z;
+        seps[k].iter().all(|s| s.value(unit) < -EPS)
+    };
     let side: Option<&dyn Fn(usize, DVec3) -> bool> = if seps.iter().any(|s| !s.is_empty()) {
         Some(&side)
     } else {
@@ -465,7 +455,7 @@ fn polygon<P: Probe>(
             other_diagonal,
         }))
     } else {
-        Some(Err((corners[..count].to_vec(), centre)))
+        Some(Err(corners[..count].to_vec()))
     }
 }
 

@@ -15,10 +15,9 @@
 
 use super::block::local_edge;
 use super::certify::EPS;
-use super::contour::{CellRef, Cells, FaceKey};
-use super::interlock::{inside_all, safe_point};
+use super::contour::{Cells, FaceKey};
 use super::patches::{
-    Config, NO_PATCH, Seps, cut_corner, edge_number, face_edges, face_segment, patch_table,
+    Config, NO_PATCH, Separator, cut_corner, edge_number, face_edges, face_segment, patch_table,
 };
 use super::qef::Qef;
 use crate::marching_cubes::GridSpec;
@@ -31,54 +30,45 @@ pub(crate) struct DualFace {
     /// World position of the lower cell's lower corner.
     pub origin: DVec3,
     /// Separating half-spaces of the patch on each side (empty for a lone patch).
-    pub lower: Seps,
-    pub upper: Seps,
+    pub lower: &'static [Separator],
+    pub upper: &'static [Separator],
     /// On an ambiguous face, the corner the segment cuts off (lower cell offsets): an inside
     /// corner, or an outside one where the face joins its inside corners.
     pub corner: Option<[usize; 3]>,
 }
 
 impl DualFace {
-    /// The face between `lower` (a cell and its global coordinates) and the cell `upper` above it
-    /// along `axis`, for the segment through the lower cell's edge `edge` (`edge_upper` in the
-    /// upper cell's numbering).
+    /// The face between `lower` (configuration, global cell) and the cell above it along `axis`,
+    /// for the segment through the lower cell's edge `edge` (`edge_upper` in the upper cell's
+    /// numbering).
     pub fn new(
-        cells: &Cells,
-        lower: (&CellRef, [usize; 3]),
-        upper: &CellRef,
+        lower: (Config, [usize; 3]),
+        upper_config: Config,
         axis: usize,
         edge: u8,
         edge_upper: u8,
         spec: &GridSpec,
     ) -> DualFace {
         let table = patch_table();
-        let seps = |r: &CellRef, e: u8| {
-            let p = table.get(r.config).patch_of_edge[e as usize];
+        let seps = |config: Config, e: u8| -> &'static [Separator] {
+            let c = table.get(config);
+            let p = c.patch_of_edge[e as usize];
             if p == NO_PATCH {
-                Seps::NONE
+                &[]
             } else {
-                cells.blocks[r.block].separators(r.local, p)
+                &c.separators[p as usize]
             }
         };
-        let config: Config = lower.0.config;
-        let ambiguous = table.get(config).ambiguous >> (2 * axis + 1) & 1 == 1;
-        let corner = ambiguous.then(|| corner_offset(cut_corner(config, axis, 1, edge)));
+        let ambiguous = table.get(lower.0).ambiguous >> (2 * axis + 1) & 1 == 1;
+        let corner = ambiguous.then(|| corner_offset(cut_corner(lower.0, axis, 1, edge)));
         let c = lower.1;
         DualFace {
             axis,
             origin: spec.point(c[0], c[1], c[2]),
             lower: seps(lower.0, edge),
-            upper: seps(upper, edge_upper),
+            upper: seps(upper_config, edge_upper),
             corner,
         }
-    }
-
-    /// True when `q` (cell units from the lower cell's corner) lies strictly on its patch's
-    /// side in both cells.
-    pub fn sides_ok(&self, q: DVec3) -> bool {
-        let mut up = q;
-        up[self.axis] -= 1.0;
-        inside_all(&self.lower, q) && inside_all(&self.upper, up)
     }
 
     /// True when `q` (cell units from the lower cell's corner, on the face) keeps the conditions.
@@ -92,7 +82,10 @@ impl DualFace {
         {
             return false;
         }
-        self.sides_ok(q)
+        let mut up = q;
+        up[self.axis] -= 1.0;
+        self.lower.iter().all(|s| s.value(q) < -EPS)
+            && self.upper.iter().all(|s| s.value(up) < -EPS)
     }
 
     /// True when the dual edge from `lo` (the lower cell's vertex) to `hi` crosses the face at a
@@ -106,10 +99,9 @@ impl DualFace {
     }
 }
 
-/// The crossing on the lower cell's edge `edge` of the face in `k`, its normal and the linear
-/// point, from the face crossings kept by the block of the lower or of the upper cell (the
-/// edge's midpoint if neither kept it).
-fn crossing(k: &FaceKey, edge: u8, cells: &Cells, spec: &GridSpec) -> (DVec3, DVec3, DVec3) {
+/// The crossing on the lower cell's edge `edge` of the face in `k`, from the face crossings kept
+/// by the block of the lower or of the upper cell (the edge's midpoint if neither kept it).
+fn crossing(k: &FaceKey, edge: u8, cells: &Cells, spec: &GridSpec) -> (DVec3, DVec3) {
     let axis = k.axis as usize;
     let (ea, o) = edge_origin(edge);
     let mut upper = k.cell;
@@ -121,14 +113,14 @@ fn crossing(k: &FaceKey, edge: u8, cells: &Cells, spec: &GridSpec) -> (DVec3, DV
         let mut s = [l[0] + o[0], l[1] + o[1], l[2] + o[2]];
         s[axis] -= lift;
         let key = local_edge(s, ea);
-        if let Ok(at) = b.face_crossings.binary_search_by_key(&key, |c| c.key) {
-            let c = b.face_crossings[at];
-            return (c.point, c.normal, c.linear);
+        if let Ok(at) = b.face_crossings.binary_search_by_key(&key, |c| c.0) {
+            let (_, p, n) = b.face_crossings[at];
+            return (p, n);
         }
     }
     let mut a = spec.point(k.cell[0] + o[0], k.cell[1] + o[1], k.cell[2] + o[2]);
     a[ea] += 0.5 * spec.cell;
-    (a, DVec3::ZERO, a)
+    (a, DVec3::ZERO)
 }
 
 /// Position of a face vertex (see the module docs).
@@ -156,16 +148,14 @@ pub(crate) fn face_vertex(k: &FaceKey, cells: &Cells, spec: &GridSpec) -> DVec3 
         edge_number(ea, o)
     };
     let face = DualFace::new(
-        cells,
-        (&r, k.cell),
-        &upper,
+        (r.config, k.cell),
+        upper.config,
         axis,
         edges[0],
         upper_edge(edges[0]),
         spec,
     );
-    let found: Vec<(DVec3, DVec3, DVec3)> =
-        edges.iter().map(|&e| crossing(k, e, cells, spec)).collect();
+    let found: Vec<(DVec3, DVec3)> = edges.iter().map(|&e| crossing(k, e, cells, spec)).collect();
     let unit = |p: DVec3| (p - face.origin) / spec.cell;
     let plane = spec.point(up[0], up[1], up[2])[axis];
     let split =
@@ -182,7 +172,7 @@ pub(crate) fn face_vertex(k: &FaceKey, cells: &Cells, spec: &GridSpec) -> DVec3 
         let mut n = DVec3::ZERO;
         n[axis] = 1.0;
         q.add(flo, n);
-        for &(p, nrm, _) in &found {
+        for &(p, nrm) in &found {
             q.add(p, nrm);
         }
         let mut v = q.solve(flo, hi).0;
@@ -193,10 +183,7 @@ pub(crate) fn face_vertex(k: &FaceKey, cells: &Cells, spec: &GridSpec) -> DVec3 
             return v;
         }
     }
-    // Each crossing on its patch's side in both cells (an interlocked cell's plane may need the
-    // linear point instead), so their midpoint is too.
-    let safe = |(p, _, l): (DVec3, DVec3, DVec3)| safe_point(p, l, |p| face.sides_ok(unit(p)));
-    let mut v = 0.5 * (safe(found[0]) + safe(found[found.len() - 1]));
+    let mut v = 0.5 * (found[0].0 + found[found.len() - 1].0);
     v[axis] = plane;
     v
 }

@@ -38,7 +38,6 @@ mod contour;
 mod crossing;
 mod emit;
 mod faces;
-mod interlock;
 mod patches;
 mod qef;
 mod sources;
@@ -166,5 +165,7 @@ fn write(positions: &[DVec3], triangles: &[[u32; 3]], sink: &mut impl MeshSink) 
 mod tests;
 #[cfg(test)]
 mod tests_accuracy;
+#[cfg(test)]
+mod tests_checkerboard;
 #[cfg(test)]
 mod tests_manifold;

@@ -22,7 +22,6 @@
 use crate::marching_cubes::table::{
     CONFIGS, case_table, corner_offset, edge_corners, face_corners,
 };
-use glam::DVec3;
 use std::sync::LazyLock;
 
 /// No patch: the edge does not cross.
@@ -47,10 +46,9 @@ pub(crate) struct Patches {
     pub split_face: u8,
     /// `separators[patch]`: half-spaces `a · x < b` (`x` in cell units from the cell's lower
     /// corner) holding every crossing of the patch strictly and every crossing of each other
-    /// patch of the cell strictly outside; empty for a lone patch, and for interlocked patches.
+    /// patch of the cell strictly outside; empty for a lone patch. Complete for every
+    /// configuration the decider can give ([`reachable`]).
     pub separators: Vec<Vec<Separator>>,
-    /// Two patches that no fixed plane separates, whose plane depends on the crossings.
-    pub interlock: Option<Interlock>,
 }
 
 /// The patches of every configuration.
@@ -71,82 +69,19 @@ impl PatchTable {
 }
 
 /// A half-space `a · x < b` in cell units (see [`Patches::separators`]).
-#[derive(Debug, Clone, Copy, PartialEq)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub(crate) struct Separator {
-    pub a: DVec3,
-    pub b: f64,
+    pub a: [i8; 3],
+    pub b: i8,
 }
 
 impl Separator {
     /// `a · x − b` (negative inside).
-    pub fn value(&self, x: DVec3) -> f64 {
-        self.a.x * x.x + self.a.y * x.y + self.a.z * x.z - self.b
+    pub fn value(&self, x: glam::DVec3) -> f64 {
+        f64::from(self.a[0]) * x.x + f64::from(self.a[1]) * x.y + f64::from(self.a[2]) * x.z
+            - f64::from(self.b)
     }
 
-    /// The complementary half-space (up to the plane itself).
-    pub fn flipped(&self) -> Separator {
-        Separator {
-            a: -self.a,
-            b: -self.b,
-        }
-    }
-}
-
-/// The separating half-spaces of one patch of one cell (at most three: a cell has at most four
-/// patches).
-#[derive(Debug, Clone, Copy)]
-pub(crate) struct Seps {
-    list: [Separator; 3],
-    len: u8,
-}
-
-impl Seps {
-    /// No separator (a lone patch).
-    pub const NONE: Seps = Seps {
-        list: [Separator {
-            a: DVec3::ZERO,
-            b: 0.0,
-        }; 3],
-        len: 0,
-    };
-
-    /// The half-spaces in `s` (at most three).
-    pub fn new(s: &[Separator]) -> Seps {
-        let mut out = Seps::NONE;
-        out.list[..s.len()].copy_from_slice(s);
-        out.len = s.len() as u8;
-        out
-    }
-}
-
-impl std::ops::Deref for Seps {
-    type Target = [Separator];
-
-    fn deref(&self) -> &[Separator] {
-        &self.list[..usize::from(self.len)]
-    }
-}
-
-/// Two patches of a configuration that no plane separates for every crossing position: the
-/// asymptotic decider joins the inside corners on both faces across one axis and separates them
-/// on the four faces along it (or the reverse). Patch `low` holds the four edges of face
-/// (`axis`, 0) and two edges along `axis`, the other patch the four edges of face (`axis`, 1) and
-/// the other two edges along `axis`; in projection along `axis` the two pairs lie on crossing
-/// diagonals. Their plane is found per cell from the crossings ([`super::interlock`]).
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub(crate) struct Interlock {
-    pub axis: u8,
-    pub low: u8,
-}
-
-/// A plane with small integer coefficients: `a · x < b` in cell units.
-#[derive(Debug, Clone, Copy)]
-struct IntPlane {
-    a: [i8; 3],
-    b: i8,
-}
-
-impl IntPlane {
     fn at_corner(&self, c: u8) -> i32 {
         let o = corner_offset(c);
         (0..3)
@@ -163,10 +98,18 @@ impl IntPlane {
             vp <= 0 && vq <= 0 && (vp < 0 || vq < 0)
         })
     }
+
+    /// The complementary half-space (up to the plane itself).
+    fn flipped(&self) -> Separator {
+        Separator {
+            a: self.a.map(|x| -x),
+            b: -self.b,
+        }
+    }
 }
 
 /// A plane with small integer coefficients separating the edges of two patches: `a` strictly
-/// negative side, `b` strictly positive side (as [`IntPlane::holds`] says).
+/// negative side, `b` strictly positive side (as [`Separator::holds`] says).
 fn separator(a: &[u8], b: &[u8]) -> Option<Separator> {
     for range in [1i8, 2] {
         let span = -range..=range;
@@ -177,12 +120,9 @@ fn separator(a: &[u8], b: &[u8]) -> Option<Separator> {
                         continue;
                     }
                     for c in -3 * range..=3 * range {
-                        let s = IntPlane { a: [x, y, z], b: c };
+                        let s = Separator { a: [x, y, z], b: c };
                         if s.holds(a, 1) && s.holds(b, -1) {
-                            return Some(Separator {
-                                a: DVec3::new(f64::from(x), f64::from(y), f64::from(z)),
-                                b: f64::from(c),
-                            });
+                            return Some(s);
                         }
                     }
                 }
@@ -192,23 +132,33 @@ fn separator(a: &[u8], b: &[u8]) -> Option<Separator> {
     None
 }
 
-/// The interlock of two patches without a separator, when they have that shape.
-fn interlock(of: &[u8; 12], loops: &[Vec<u8>]) -> Option<Interlock> {
-    if loops.len() != 2 {
-        return None;
+/// True when the asymptotic decider can give configuration `config` on some corner values.
+///
+/// On a face with inside corners `a`, `c` and outside corners `b`, `d` the decider joins when
+/// `|a|·|c| > b·d`. Two opposite faces together hold all eight corners, so when both join, the
+/// product of the four inside magnitudes exceeds that of the four outside values, and when both
+/// separate it does not. Where every face is ambiguous (the two checkerboard masks), a
+/// configuration with one pair of opposite faces both joined and another pair both separated
+/// therefore never occurs. Those are the only configurations whose patches lack a separating
+/// plane (tested): the two patches interlock, each holding the four edges of one face of the
+/// joined (or separated) pair and two diagonally opposite edges between them.
+pub(crate) fn reachable(config: Config) -> bool {
+    let t = case_table();
+    let (mask, joined) = (usize::from(config & 255), (config >> 8) as u8);
+    let amb = t.ambiguous[mask];
+    let pairs = (0..3).map(|axis| {
+        let both = 0b11 << (2 * axis);
+        (amb & both == both).then_some(joined & both)
+    });
+    let (mut all_joined, mut all_separated) = (false, false);
+    for (axis, p) in pairs.enumerate() {
+        match p {
+            Some(j) if j == 0b11 << (2 * axis) => all_joined = true,
+            Some(0) => all_separated = true,
+            _ => {}
+        }
     }
-    (0..3).find_map(|axis| {
-        let face = |side: u8| {
-            let p = face_edges(axis, side).map(|e| of[e as usize]);
-            p.iter().all(|&x| x == p[0]).then_some(p[0])
-        };
-        let (low, high) = (face(0)?, face(1)?);
-        let along = |p: u8| (0..4).filter(|&j| of[4 * axis + j] == p).count();
-        (low != high && along(low) == 2 && along(high) == 2).then_some(Interlock {
-            axis: axis as u8,
-            low,
-        })
-    })
+    !(all_joined && all_separated)
 }
 
 static TABLE: LazyLock<PatchTable> = LazyLock::new(build);
@@ -288,17 +238,13 @@ fn patches(config: usize) -> Patches {
         }
     }
     let mut seps = vec![Vec::new(); loops.len()];
-    let mut unseparated = false;
     for i in 0..loops.len() {
         for j in i + 1..loops.len() {
-            // Every pair of patches of every configuration has one, except interlocked pairs
-            // (tested below).
-            match separator(&loops[i], &loops[j]) {
-                Some(s) => {
-                    seps[i].push(s);
-                    seps[j].push(s.flipped());
-                }
-                None => unseparated = true,
+            // Every pair of patches of every reachable configuration has one (tested below); a
+            // missing one would leave that pair unseparated, never panic.
+            if let Some(s) = separator(&loops[i], &loops[j]) {
+                seps[i].push(s);
+                seps[j].push(s.flipped());
             }
         }
     }
@@ -309,11 +255,6 @@ fn patches(config: usize) -> Patches {
         joined: (config >> 8) as u8,
         split_face: split,
         separators: seps,
-        interlock: if unseparated {
-            interlock(&of, loops)
-        } else {
-            None
-        },
     }
 }
 
@@ -345,7 +286,7 @@ pub(crate) fn face_segment(config: Config, axis: usize, side: u8, edge: u8) -> u
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::marching_cubes::table::edge_origin;
+    use crate::marching_cubes::table::{cell_config, edge_origin};
 
     #[test]
     fn edge_numbers_invert_edge_origin() {
@@ -472,33 +413,20 @@ mod tests {
         }
     }
 
-    /// Every pair of patches of every configuration has a separating plane, and it separates:
-    /// crossings anywhere strictly inside the edges land strictly on their own patch's side.
+    /// Every pair of patches of every configuration the decider can give has a separating
+    /// plane, and it separates: crossings anywhere strictly inside the edges land strictly on
+    /// their own patch's side. The configurations it cannot give include the only ones without.
     #[test]
     fn every_pair_of_patches_is_separated() {
         let t = patch_table();
         let (mut pairs, mut joined_pairs) = (0, 0);
-        let mut interlocked = 0;
+        let (mut unreachable, mut unseparated) = (0, 0);
         for config in configs() {
             let c = t.get(config);
             let n = c.edges.len();
-            if let Some(i) = c.interlock {
-                // No fixed plane: both faces across the axis joined and the four along it
-                // separated, or the reverse; the edges along the axis of each patch lie on a
-                // diagonal of the cell's cross-section.
-                interlocked += 1;
-                assert_eq!(n, 2);
-                assert!(c.separators.iter().all(Vec::is_empty));
-                let axis = usize::from(i.axis);
-                let across = 0b11 << (2 * axis);
-                let flags = (c.joined & across, c.joined & !across);
-                assert!(flags == (across, 0) || flags == (0, 0b111111 & !across));
-                for p in 0..2u8 {
-                    let along: Vec<u8> = (0..4u8)
-                        .filter(|&j| c.patch_of_edge[4 * axis + j as usize] == p)
-                        .collect();
-                    assert!(along == [0, 3] || along == [1, 2], "config {config:#x}");
-                }
+            if !reachable(config) {
+                unreachable += 1;
+                unseparated += usize::from(c.separators.iter().any(|s| s.len() + 1 < n));
                 continue;
             }
             for p in 0..n {
@@ -525,7 +453,55 @@ mod tests {
             }
         }
         assert!(pairs > 0 && joined_pairs > 0);
-        // The checkerboard masks with the faces across one axis decided unlike those along it.
-        assert_eq!(interlocked, 12);
+        // Per checkerboard mask, 18 of the 64 joined sets mix a joined and a separated pair of
+        // opposite faces; 6 of them give two interlocked patches without a plane.
+        assert_eq!((unreachable, unseparated), (36, 12));
+    }
+
+    /// The decider never gives a configuration [`reachable`] excludes: random corner values for
+    /// every mask (magnitudes over many orders, exact zeros outside), and for the checkerboard
+    /// masks many more.
+    #[test]
+    fn decider_gives_only_reachable_configurations() {
+        let mut state = 0x9e37_79b9_7f4a_7c15u64;
+        let mut next = || {
+            state ^= state << 13;
+            state ^= state >> 7;
+            state ^= state << 17;
+            state
+        };
+        let mut seen = std::collections::HashSet::new();
+        for trial in 0..200_000 {
+            let mask = if trial % 2 == 0 {
+                [0x69, 0x96][trial / 2 % 2]
+            } else {
+                (next() % 256) as usize
+            };
+            let values: Vec<f32> = (0..8)
+                .map(|c| {
+                    let r = next();
+                    let magnitude = if r % 16 == 0 && mask >> c & 1 == 0 {
+                        0.0
+                    } else {
+                        // 1e-6 to 1e6, log-uniform.
+                        10f32.powf(((r >> 8) % 12_001) as f32 / 1000.0 - 6.0)
+                    };
+                    if mask >> c & 1 == 1 {
+                        -magnitude - f32::MIN_POSITIVE
+                    } else {
+                        magnitude
+                    }
+                })
+                .collect();
+            let config = cell_config(mask, |c| values[usize::from(c)]) as Config;
+            assert!(reachable(config), "config {config:#x} from {values:?}");
+            seen.insert(config);
+        }
+        // Most reachable checkerboard configurations were met.
+        let checkerboards = seen
+            .iter()
+            .filter(|&&c| matches!(c & 255, 0x69 | 0x96))
+            .count();
+        assert!(checkerboards > 2 * (64 - 18) / 2, "{checkerboards}");
     }
 }
