@@ -12,9 +12,15 @@
 //!   cells), and a separator through `q` splits the face: from the corner `E` and `E'` share
 //!   through `q` to the opposite corner ([`FaceKind::Low`], [`FaceKind::High`]), or along `E`
 //!   through `q` when `E'` is the far edge ([`FaceKind::Far`]). On an ambiguous face each segment
-//!   gets the half of the face on its inside corner's side, and its two edges split that half
-//!   from the corner through the segment's `q` to the face centre: this needs `q` strictly inside
-//!   the half, else the dual edge is routed through a face vertex that is (`dual_edge_ok`).
+//!   gets the half of the face on the side of the corner it cuts off, and its two edges split that
+//!   half from the corner through the segment's `q` to the face centre: this needs `q` strictly
+//!   inside the half, else the dual edge is routed through a face vertex that is
+//!   ([`super::faces::DualFace::crossing_ok`]). The cut-off corner is the inside corner the
+//!   segment's edges share, or the outside one where the asymptotic decider joins the face's
+//!   inside corners ([`super::patches::cut_corner`]): a joined face has the segments of a
+//!   separated face with the signs flipped, and nothing here depends on which side is inside, so
+//!   the halves, zones and tests are the same, with `E`'s segment cutting off its outside end
+//!   instead of its inside end ([`FaceKind::of`]).
 //! - A quad split into two triangles along a diagonal lies in the cones of its zones when, in the
 //!   cell whose quadrant the diagonal passes through (seen along `E`), the diagonal passes
 //!   between `E` and that cell's vertex, and where the diagonal crosses that cell's two faces the
@@ -26,7 +32,13 @@
 //!   patches, and of polygons through face vertices.
 //! - A cell with several patches: each patch's vertex, crossings and dual-edge crossings stay
 //!   strictly on its own side of the plane separating it from each other patch
-//!   ([`super::patches::PatchTable::separators`]), so their cones cannot meet.
+//!   ([`super::patches::Patches::separators`]), so their cones cannot meet. Every configuration
+//!   the decider can give has such planes; the only ones without (two interlocked patches)
+//!   would need one pair of opposite faces joined and another separated, which the decider
+//!   never gives ([`super::patches::reachable`]).
+//! - A single patch whose loop winds around the cell through joined faces (marching cubes fans
+//!   it from a centre vertex) is no different: its cones share one apex, and cones from one
+//!   apex strictly inside the cell over disjoint zones are disjoint whatever the loop's shape.
 //!
 //! The tests run in floating point on the final coordinates with a margin ([`EPS`], in cells)
 //! far above their rounding error, so what they certify holds exactly.
