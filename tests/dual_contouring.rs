@@ -11,15 +11,23 @@
 //!
 //! Level 2 at 128³ runs by default (cut ≥ 10×); level 3 at 256³ (cut ≥ 20×, genus 1409: the
 //! acceptance figure) is `--ignored`.
+//!
+//! Also the regular tetrahedron, whose tips leave a sample next to each one with all three face
+//! neighbours exactly on the surface (outside): dual contouring follows marching cubes' decider
+//! there and keeps the tips attached (one shell, as marching cubes), sharp and without
+//! self-intersections.
 
 use glam::DVec3;
 use rayon::prelude::*;
 use solidkit_kernel::Program;
 use solidkit_kernel::models::{Model, menger_genus};
+use solidkit_kernel::polyhedra::{PlatonicKind, PlatonicSize, Polyhedron};
 use solidkit_meshing::TopologyReport;
 use solidkit_meshing::dual_contouring::{DcOptions, mesh_dc};
 use solidkit_meshing::marching_cubes::GridSpec;
 use solidkit_meshing::measure::{TriangleTree, one_sided};
+use solidkit_meshing::octree::mesh_sparse;
+use solidkit_tests::{load_tree, rel_err};
 
 /// An upper bound of the distance from `q` to the surface of `program`'s solid (exact inside).
 fn distance_bound(program: &Program, q: DVec3) -> f64 {
@@ -123,4 +131,48 @@ fn menger_2_tolerance_at_128() {
 #[ignore]
 fn menger_3_tolerance_at_256() {
     menger_case(3, 256, 0.5, 20.0);
+}
+
+/// The tetrahedron of circumradius 1 (`fixtures/crosscheck/platonic_tetrahedron.json`), meshed as
+/// `solidkit mesh --method dc` does: one closed oriented sphere without self-intersections, the
+/// topology of marching cubes on the same samples, its volume within 0.5 % of the exact
+/// polyhedron's.
+fn tetrahedron_at(resolution: usize) {
+    let solid = load_tree("crosscheck/platonic_tetrahedron.json");
+    let exact =
+        Polyhedron::platonic(PlatonicKind::Tetrahedron, PlatonicSize::Circumradius(1.0)).unwrap();
+    let program = solid.compile();
+    let spec = GridSpec::for_bounds(&solid.bbox(), resolution).unwrap();
+    let (dc, _) = mesh_dc(&program, spec, &DcOptions::default()).unwrap();
+    let (mc, _) = mesh_sparse(&program, spec, &Default::default()).unwrap();
+    let (r, m) = (TopologyReport::of(&dc), TopologyReport::of(&mc));
+    assert!(r.closed && r.manifold && r.oriented, "{:?}", r.examples);
+    assert_eq!(
+        (r.shells, r.euler_characteristic, r.genus),
+        (1, 2, Some(0)),
+        "{resolution}: shells, χ, genus"
+    );
+    assert_eq!((m.shells, m.euler_characteristic), (1, 2), "marching cubes");
+    assert_eq!(
+        r.self_intersections,
+        Some(0),
+        "{:?}",
+        r.examples.self_intersections
+    );
+    assert!(
+        rel_err(r.volume, exact.volume()) < 5e-3,
+        "volume {} against {}",
+        r.volume,
+        exact.volume()
+    );
+}
+
+#[test]
+fn tetrahedron_is_one_shell_at_64() {
+    tetrahedron_at(64);
+}
+
+#[test]
+fn tetrahedron_is_one_shell_at_96() {
+    tetrahedron_at(96);
 }

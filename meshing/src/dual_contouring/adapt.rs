@@ -113,11 +113,11 @@ fn collapse(
                     if o.first[local] == NO_VERTEX {
                         continue;
                     }
-                    let mask = o.masks[local] as usize;
+                    let cell = table.get(o.configs[local]);
                     let c = [o.min[0] + i, o.min[1] + j, o.min[2] + k];
                     let vertex = contour.bases[b] + o.first[local];
-                    let state = if table.edges[mask].len() == 1
-                        && table.ambiguous[mask] == 0
+                    let state = if cell.edges.len() == 1
+                        && cell.ambiguous == 0
                         && !forbidden.contains(&(0, c))
                     {
                         State::Collapsed {
@@ -225,12 +225,13 @@ fn node_state(
         }
     }
     let at = |q: [usize; 3]| s[q[2]][q[1]][q[0]];
-    let mut mask = 0usize;
+    let mut mask = 0u16;
     for c in 0..8 {
-        mask |= usize::from(at([c & 1, c >> 1 & 1, c >> 2 & 1].map(|x| 2 * x))) << c;
+        mask |= u16::from(at([c & 1, c >> 1 & 1, c >> 2 & 1].map(|x| 2 * x))) << c;
     }
-    let table = patch_table();
-    if mask == 0 || mask == 255 || table.edges[mask].len() != 1 || table.ambiguous[mask] != 0 {
+    // Without ambiguous faces the mask is the whole configuration.
+    let node = patch_table().get(mask);
+    if mask == 0 || mask == 255 || node.edges.len() != 1 || node.ambiguous != 0 {
         return State::Blocked;
     }
     // Ju et al.: edge midpoints, face centres.

@@ -9,9 +9,9 @@
 
 use super::certify::{SEPARATOR_MARGIN, VERTEX_MARGIN};
 use super::crossing::{CrossingScratch, DcField, EdgeQuery, refine};
-use super::patches::{NO_PATCH, Separator, face_edges, patch_table};
+use super::patches::{Config, NO_PATCH, Separator, face_edges, patch_table, reachable};
 use super::qef::Qef;
-use crate::marching_cubes::table::edge_origin;
+use crate::marching_cubes::table::{cell_config, edge_origin};
 use crate::marching_cubes::{GridSpec, inside};
 use glam::DVec3;
 
@@ -48,8 +48,9 @@ pub(crate) struct Block {
     pub min: [usize; 3],
     /// Cells per axis.
     pub extent: [usize; 3],
-    /// Sign mask of every cell (x fastest).
-    pub masks: Vec<u8>,
+    /// Configuration of every cell (x fastest): sign mask and joined ambiguous faces, as marching
+    /// cubes decides them from the same samples.
+    pub configs: Vec<Config>,
     /// Local number of each cell's first patch vertex ([`NO_VERTEX`] without surface).
     pub first: Vec<u32>,
     /// Patch vertices.
@@ -152,7 +153,7 @@ pub(crate) fn build<F: DcField>(
         coord: min.map(|m| m / block_size),
         min,
         extent,
-        masks: vec![0; cells],
+        configs: vec![0; cells],
         first: vec![NO_VERTEX; cells],
         samples: (nxy * n[2]) as u64,
         evaluation_s,
@@ -170,14 +171,20 @@ pub(crate) fn build<F: DcField>(
                     mask |= ins[base + off] << c;
                 }
                 let ci = i + e[0] * (j + e[1] * k);
-                b.masks[ci] = mask;
                 if mask == 0 || mask == 255 {
+                    b.configs[ci] = Config::from(mask);
                     continue;
                 }
+                // The marching-cubes configuration, decided on the same f32 samples.
+                let config =
+                    cell_config(usize::from(mask), |c| values[base + corner[c as usize]]) as Config;
+                debug_assert!(reachable(config), "the decider never gives {config:#x}");
+                b.configs[ci] = config;
+                let cell = table.get(config);
                 b.first[ci] = b.vertices.len() as u32;
                 let lo = point([i, j, k]);
                 let hi = lo + DVec3::splat(spec.cell);
-                let patches = &table.edges[mask as usize];
+                let patches = &cell.edges;
                 let inner = DVec3::splat(VERTEX_MARGIN * spec.cell);
                 for (pi, patch) in patches.iter().enumerate() {
                     let mut q = Qef::new(lo + half);
@@ -199,18 +206,18 @@ pub(crate) fn build<F: DcField>(
                         let clo = plo.max(lo + inner);
                         let v = q.solve(clo, phi.min(hi - inner).max(clo)).0;
                         let mass = q.reference + q.mass / f64::from(q.count.max(1));
-                        separated(v, mass, lo, spec.cell, &table.separators[mask as usize][pi])
+                        separated(v, mass, lo, spec.cell, &cell.separators[pi])
                     };
                     b.vertices.push(v);
                     if keep {
                         b.qefs.push(q);
                     }
                 }
-                let amb = table.ambiguous[mask as usize];
+                let amb = cell.ambiguous;
                 if patches.len() > 1 {
                     // Dual edges next to this cell may be routed through its faces.
                     for edge in 0..12u8 {
-                        if table.patch_of_edge[mask as usize][edge as usize] != NO_PATCH {
+                        if cell.patch_of_edge[edge as usize] != NO_PATCH {
                             let (ea, o) = edge_origin(edge);
                             face_keys.push(local_edge([i + o[0], j + o[1], k + o[2]], ea));
                         }

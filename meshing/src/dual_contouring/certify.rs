@@ -12,9 +12,15 @@
 //!   cells), and a separator through `q` splits the face: from the corner `E` and `E'` share
 //!   through `q` to the opposite corner ([`FaceKind::Low`], [`FaceKind::High`]), or along `E`
 //!   through `q` when `E'` is the far edge ([`FaceKind::Far`]). On an ambiguous face each segment
-//!   gets the half of the face on its inside corner's side, and its two edges split that half
-//!   from the corner through the segment's `q` to the face centre: this needs `q` strictly inside
-//!   the half, else the dual edge is routed through a face vertex that is (`dual_edge_ok`).
+//!   gets the half of the face on the side of the corner it cuts off, and its two edges split that
+//!   half from the corner through the segment's `q` to the face centre: this needs `q` strictly
+//!   inside the half, else the dual edge is routed through a face vertex that is
+//!   ([`super::faces::DualFace::crossing_ok`]). The cut-off corner is the inside corner the
+//!   segment's edges share, or the outside one where the asymptotic decider joins the face's
+//!   inside corners ([`super::patches::cut_corner`]): a joined face has the segments of a
+//!   separated face with the signs flipped, and nothing here depends on which side is inside, so
+//!   the halves, zones and tests are the same, with `E`'s segment cutting off its outside end
+//!   instead of its inside end ([`FaceKind::of`]).
 //! - A quad split into two triangles along a diagonal lies in the cones of its zones when, in the
 //!   cell whose quadrant the diagonal passes through (seen along `E`), the diagonal passes
 //!   between `E` and that cell's vertex, and where the diagonal crosses that cell's two faces the
@@ -26,7 +32,13 @@
 //!   patches, and of polygons through face vertices.
 //! - A cell with several patches: each patch's vertex, crossings and dual-edge crossings stay
 //!   strictly on its own side of the plane separating it from each other patch
-//!   ([`super::patches::PatchTable::separators`]), so their cones cannot meet.
+//!   ([`super::patches::Patches::separators`]), so their cones cannot meet. Every configuration
+//!   the decider can give has such planes; the only ones without (two interlocked patches)
+//!   would need one pair of opposite faces joined and another separated, which the decider
+//!   never gives ([`super::patches::reachable`]).
+//! - A single patch whose loop winds around the cell through joined faces (marching cubes fans
+//!   it from a centre vertex) is no different: its cones share one apex, and cones from one
+//!   apex strictly inside the cell over disjoint zones are disjoint whatever the loop's shape.
 //!
 //! The tests run in floating point on the final coordinates with a margin ([`EPS`], in cells)
 //! far above their rounding error, so what they certify holds exactly.
@@ -61,10 +73,12 @@ pub(crate) enum FaceKind {
 
 impl FaceKind {
     /// The kind from the inside flags of the face corners: `E`'s ends `e0` (`t = 0`), `e1`, and
-    /// the far corners `f0` (`t = 0`), `f1`. `E` crosses (`e0 != e1`).
-    pub fn of(e0: bool, e1: bool, f0: bool, f1: bool) -> Self {
+    /// the far corners `f0` (`t = 0`), `f1`. `E` crosses (`e0 != e1`). On an ambiguous face,
+    /// `joined` says the face joins its inside corners: `E`'s segment then cuts off `E`'s outside
+    /// end instead of its inside end (ignored on other faces).
+    pub fn of(e0: bool, e1: bool, f0: bool, f1: bool, joined: bool) -> Self {
         if e0 == f1 && e1 == f0 {
-            if e0 {
+            if e0 != joined {
                 FaceKind::AmbiguousLow
             } else {
                 FaceKind::AmbiguousHigh
@@ -255,17 +269,91 @@ mod tests {
 
     #[test]
     fn face_kinds() {
-        assert_eq!(FaceKind::of(true, false, true, false), FaceKind::Far);
-        assert_eq!(FaceKind::of(true, false, false, false), FaceKind::Low);
-        assert_eq!(FaceKind::of(true, false, true, true), FaceKind::High);
+        for joined in [false, true] {
+            // Faces with one segment do not depend on the decider.
+            assert_eq!(
+                FaceKind::of(true, false, true, false, joined),
+                FaceKind::Far
+            );
+            assert_eq!(
+                FaceKind::of(true, false, false, false, joined),
+                FaceKind::Low
+            );
+            assert_eq!(
+                FaceKind::of(true, false, true, true, joined),
+                FaceKind::High
+            );
+        }
         assert_eq!(
-            FaceKind::of(true, false, false, true),
+            FaceKind::of(true, false, false, true, false),
             FaceKind::AmbiguousLow
         );
         assert_eq!(
-            FaceKind::of(false, true, true, false),
+            FaceKind::of(false, true, true, false, false),
             FaceKind::AmbiguousHigh
         );
+        // Joined: the segment cuts off E's outside end.
+        assert_eq!(
+            FaceKind::of(true, false, false, true, true),
+            FaceKind::AmbiguousHigh
+        );
+        assert_eq!(
+            FaceKind::of(false, true, true, false, true),
+            FaceKind::AmbiguousLow
+        );
+    }
+
+    /// On every face of every crossing edge of every configuration the decider gives, the kind
+    /// names the edge that the case table's loops join to `E` on that face.
+    #[test]
+    fn face_kinds_follow_the_case_table() {
+        use super::super::patches::{Config, edge_number, patch_table, reachable};
+        use crate::marching_cubes::table::{CONFIGS, corner_offset, edge_corners, edge_origin};
+        let edge = |a: u8, b: u8| {
+            let along = (a ^ b).trailing_zeros() as usize;
+            edge_number(along, corner_offset(a & b))
+        };
+        let mut ambiguous = [0usize; 2];
+        for config in (0..CONFIGS as Config).filter(|&c| reachable(c)) {
+            let p = patch_table().get(config);
+            if (config >> 8) as u8 & !p.ambiguous != 0 {
+                continue; // not a distinct configuration
+            }
+            let sides: Vec<(u8, u8)> = (p.edges.iter())
+                .flat_map(|l| (0..l.len()).map(move |k| (l[k], l[(k + 1) % l.len()])))
+                .collect();
+            let inside = |c: u8| config >> c & 1 == 1;
+            for e in (0..12u8).filter(|&e| p.patch_of_edge[usize::from(e)] != u8::MAX) {
+                let (a, _) = edge_origin(e);
+                let (e0, e1) = edge_corners(e);
+                for w in (0..3).filter(|&w| w != a) {
+                    // The face spanned by E and axis w: the one across the third axis.
+                    let fa = 3 - a - w;
+                    let bit = 2 * fa + usize::from(e0 >> fa & 1);
+                    let (f0, f1) = (e0 ^ 1 << w, e1 ^ 1 << w);
+                    let kind = FaceKind::of(
+                        inside(e0),
+                        inside(e1),
+                        inside(f0),
+                        inside(f1),
+                        p.joined >> bit & 1 == 1,
+                    );
+                    let partner = match kind {
+                        FaceKind::Far => edge(f0, f1),
+                        FaceKind::Low | FaceKind::AmbiguousLow => edge(e0, f0),
+                        FaceKind::High | FaceKind::AmbiguousHigh => edge(e1, f1),
+                    };
+                    if kind.ambiguous() {
+                        ambiguous[usize::from(p.joined >> bit & 1)] += 1;
+                    }
+                    assert!(
+                        sides.contains(&(e, partner)) || sides.contains(&(partner, e)),
+                        "config {config:#x} edge {e} face {bit}: {kind:?}"
+                    );
+                }
+            }
+        }
+        assert!(ambiguous[0] > 0 && ambiguous[1] > 0);
     }
 
     /// A flat quad around the edge (the plane z = 0.5) is certified either way; a quad whose

@@ -7,7 +7,7 @@ use super::block::{Block, NO_VERTEX, OwnedEdge};
 use super::certify::{EPS, EdgeFrame, FaceKind, RingFace, certify};
 use super::crossing::DcField;
 use super::faces::{DualFace, face_vertex};
-use super::patches::{NO_PATCH, edge_number, face_segment, patch_table};
+use super::patches::{Config, NO_PATCH, edge_number, face_segment, patch_table};
 use crate::marching_cubes::GridSpec;
 use glam::DVec3;
 use rayon::prelude::*;
@@ -143,7 +143,8 @@ pub(crate) struct Contour {
 pub(crate) struct CellRef {
     pub block: usize,
     pub local: usize,
-    pub mask: u8,
+    /// The cell's configuration (sign mask and joined faces).
+    pub config: Config,
     /// Global number of the cell's first patch vertex.
     pub first: u32,
 }
@@ -169,7 +170,7 @@ impl Cells<'_> {
         (first != NO_VERTEX).then(|| CellRef {
             block: b,
             local,
-            mask: o.masks[local],
+            config: o.configs[local],
             first: self.bases[b] + first,
         })
     }
@@ -296,14 +297,14 @@ fn polygon<P: Probe>(
     let refs = refs.map(|r| r.expect("set"));
     let vertex = |k: usize| {
         let (_, r) = refs[k];
-        let p = table.patch_of_edge[r.mask as usize][edge_in_cell[k] as usize];
+        let p = table.get(r.config).patch_of_edge[edge_in_cell[k] as usize];
         debug_assert_ne!(p, NO_PATCH);
         r.first + p as u32
     };
     let position = |k: usize| {
         let (_, r) = refs[k];
         let o = &cells.blocks[r.block];
-        let p = table.patch_of_edge[r.mask as usize][edge_in_cell[k] as usize];
+        let p = table.get(r.config).patch_of_edge[edge_in_cell[k] as usize];
         o.vertices[(o.first[r.local] + p as u32) as usize]
     };
     let frame = EdgeFrame {
@@ -314,9 +315,9 @@ fn polygon<P: Probe>(
     let inside_at = |k: usize, s: [usize; 3]| {
         let (c, r) = refs[k];
         let o = [0, 1, 2].map(|a| s[a] - c[a]);
-        r.mask >> (o[0] | o[1] << 1 | o[2] << 2) & 1 == 1
+        r.config >> (o[0] | o[1] << 1 | o[2] << 2) & 1 == 1
     };
-    let several = |r: &CellRef| table.edges[r.mask as usize].len() > 1;
+    let several = |r: &CellRef| table.get(r.config).edges.len() > 1;
     // At most four cell vertices and four face vertices; a vector only for fans.
     let mut corners = [Corner::Vertex(0); 8];
     let mut count = 0;
@@ -337,16 +338,6 @@ fn polygon<P: Probe>(
         f0[w] = if ca[w] == g[w] { g[w] + 1 } else { g[w] - 1 };
         let mut f1 = f0;
         f1[axis] += 1;
-        let kind = FaceKind::of(
-            e.lower_inside,
-            !e.lower_inside,
-            inside_at(k, f0),
-            inside_at(k, f1),
-        );
-        faces[k] = RingFace {
-            on_x: fa == u,
-            kind,
-        };
         let (lower, upper, lower_k, upper_k) = if ca[fa] < cb[fa] {
             (ra, rb, k, l)
         } else {
@@ -355,9 +346,27 @@ fn polygon<P: Probe>(
         let lower_cell = if lower_k == k { ca } else { cb };
         let bit_hi = 1 << (2 * fa + 1);
         let bit_lo = 1 << (2 * fa);
+        // Both cells decide the shared face alike (same four samples); the lower cell's word
+        // is the one every user of the face reads.
+        let joined = table.get(lower.config).joined & bit_hi != 0;
+        debug_assert!(
+            table.get(lower.config).ambiguous & bit_hi == 0
+                || joined == (table.get(upper.config).joined & bit_lo != 0)
+        );
+        let kind = FaceKind::of(
+            e.lower_inside,
+            !e.lower_inside,
+            inside_at(k, f0),
+            inside_at(k, f1),
+            joined,
+        );
+        faces[k] = RingFace {
+            on_x: fa == u,
+            kind,
+        };
         let ambiguous = kind.ambiguous();
         let segment = if ambiguous {
-            face_segment(lower.mask, fa, 1, edge_in_cell[lower_k])
+            face_segment(lower.config, fa, 1, edge_in_cell[lower_k])
         } else {
             0
         };
@@ -366,16 +375,16 @@ fn polygon<P: Probe>(
             axis: fa as u8,
             segment,
         });
-        if table.split_face[lower.mask as usize] & bit_hi != 0
-            && table.split_face[upper.mask as usize] & bit_lo != 0
+        if table.get(lower.config).split_face & bit_hi != 0
+            && table.get(upper.config).split_face & bit_lo != 0
         {
             fan = true;
             corners[count] = key;
             count += 1;
         } else if ambiguous || several(&lower) || several(&upper) {
             let face = DualFace::new(
-                (lower.mask, lower_cell),
-                upper.mask,
+                (lower.config, lower_cell),
+                upper.config,
                 fa,
                 edge_in_cell[lower_k],
                 edge_in_cell[upper_k],
@@ -422,8 +431,8 @@ fn polygon<P: Probe>(
     // In cells with several patches the pieces must also keep to their patch's side.
     let seps = [0, 1, 2, 3].map(|k| {
         let (_, r) = refs[k];
-        let patch = table.patch_of_edge[r.mask as usize][edge_in_cell[k] as usize];
-        table.separators[r.mask as usize][patch as usize].as_slice()
+        let c = table.get(r.config);
+        c.separators[c.patch_of_edge[edge_in_cell[k] as usize] as usize].as_slice()
     });
     let side = |k: usize, x: DVec3| {
         // Local edge coordinates to ring cell k's unit coordinates.

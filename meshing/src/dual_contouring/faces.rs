@@ -16,55 +16,57 @@
 use super::block::local_edge;
 use super::certify::EPS;
 use super::contour::{Cells, FaceKey};
-use super::patches::{NO_PATCH, Separator, edge_number, face_edges, face_segment, patch_table};
+use super::patches::{
+    Config, NO_PATCH, Separator, cut_corner, edge_number, face_edges, face_segment, patch_table,
+};
 use super::qef::Qef;
 use crate::marching_cubes::GridSpec;
-use crate::marching_cubes::table::{corner_offset, edge_corners, edge_origin};
+use crate::marching_cubes::table::{corner_offset, edge_origin};
 use glam::DVec3;
 
 /// The conditions on a point of one face: the upper face along `axis` of the lower cell.
-pub(crate) struct DualFace<'a> {
+pub(crate) struct DualFace {
     pub axis: usize,
     /// World position of the lower cell's lower corner.
     pub origin: DVec3,
     /// Separating half-spaces of the patch on each side (empty for a lone patch).
-    pub lower: &'a [Separator],
-    pub upper: &'a [Separator],
-    /// On an ambiguous face, the inside corner the segment cuts off (lower cell offsets).
+    pub lower: &'static [Separator],
+    pub upper: &'static [Separator],
+    /// On an ambiguous face, the corner the segment cuts off (lower cell offsets): an inside
+    /// corner, or an outside one where the face joins its inside corners.
     pub corner: Option<[usize; 3]>,
 }
 
-impl<'a> DualFace<'a> {
-    /// The face between `lower` (mask, global cell) and the cell above it along `axis`, for the
-    /// segment through the lower cell's edge `edge` (`edge_upper` in the upper cell's numbering).
+impl DualFace {
+    /// The face between `lower` (configuration, global cell) and the cell above it along `axis`,
+    /// for the segment through the lower cell's edge `edge` (`edge_upper` in the upper cell's
+    /// numbering).
     pub fn new(
-        lower: (u8, [usize; 3]),
-        upper_mask: u8,
+        lower: (Config, [usize; 3]),
+        upper_config: Config,
         axis: usize,
         edge: u8,
         edge_upper: u8,
         spec: &GridSpec,
-    ) -> DualFace<'a> {
+    ) -> DualFace {
         let table = patch_table();
-        let seps = |mask: u8, e: u8| -> &'a [Separator] {
-            let p = table.patch_of_edge[mask as usize][e as usize];
+        let seps = |config: Config, e: u8| -> &'static [Separator] {
+            let c = table.get(config);
+            let p = c.patch_of_edge[e as usize];
             if p == NO_PATCH {
                 &[]
             } else {
-                &table.separators[mask as usize][p as usize]
+                &c.separators[p as usize]
             }
         };
-        let ambiguous = table.ambiguous[lower.0 as usize] >> (2 * axis + 1) & 1 == 1;
-        let corner = ambiguous.then(|| {
-            let (a, b) = edge_corners(edge);
-            corner_offset(if lower.0 >> a & 1 == 1 { a } else { b })
-        });
+        let ambiguous = table.get(lower.0).ambiguous >> (2 * axis + 1) & 1 == 1;
+        let corner = ambiguous.then(|| corner_offset(cut_corner(lower.0, axis, 1, edge)));
         let c = lower.1;
         DualFace {
             axis,
             origin: spec.point(c[0], c[1], c[2]),
             lower: seps(lower.0, edge),
-            upper: seps(upper_mask, edge_upper),
+            upper: seps(upper_config, edge_upper),
             corner,
         }
     }
@@ -133,11 +135,12 @@ pub(crate) fn face_vertex(k: &FaceKey, cells: &Cells, spec: &GridSpec) -> DVec3 
     let upper = cells
         .get(up)
         .expect("face vertices lie between surface cells");
-    let ambiguous = table.ambiguous[r.mask as usize] >> (2 * axis + 1) & 1 == 1;
+    let (lower, above) = (table.get(r.config), table.get(upper.config));
+    let ambiguous = lower.ambiguous >> (2 * axis + 1) & 1 == 1;
     let edges: Vec<u8> = face_edges(axis, 1)
         .into_iter()
-        .filter(|&e| table.patch_of_edge[r.mask as usize][e as usize] != NO_PATCH)
-        .filter(|&e| !ambiguous || face_segment(r.mask, axis, 1, e) == k.segment)
+        .filter(|&e| lower.patch_of_edge[e as usize] != NO_PATCH)
+        .filter(|&e| !ambiguous || face_segment(r.config, axis, 1, e) == k.segment)
         .collect();
     let upper_edge = |e: u8| {
         let (ea, mut o) = edge_origin(e);
@@ -145,8 +148,8 @@ pub(crate) fn face_vertex(k: &FaceKey, cells: &Cells, spec: &GridSpec) -> DVec3 
         edge_number(ea, o)
     };
     let face = DualFace::new(
-        (r.mask, k.cell),
-        upper.mask,
+        (r.config, k.cell),
+        upper.config,
         axis,
         edges[0],
         upper_edge(edges[0]),
@@ -155,8 +158,8 @@ pub(crate) fn face_vertex(k: &FaceKey, cells: &Cells, spec: &GridSpec) -> DVec3 
     let found: Vec<(DVec3, DVec3)> = edges.iter().map(|&e| crossing(k, e, cells, spec)).collect();
     let unit = |p: DVec3| (p - face.origin) / spec.cell;
     let plane = spec.point(up[0], up[1], up[2])[axis];
-    let split = table.split_face[r.mask as usize] >> (2 * axis + 1) & 1 == 1
-        && table.split_face[upper.mask as usize] >> (2 * axis) & 1 == 1;
+    let split =
+        lower.split_face >> (2 * axis + 1) & 1 == 1 && above.split_face >> (2 * axis) & 1 == 1;
     if split {
         // Where the tangent lines at the two crossings meet within the face (a QEF of their
         // planes and the face plane), kept in the face.

@@ -1,7 +1,8 @@
 //! Dual contouring that is always manifold, keeps sharp features, and adapts to an error budget.
 //!
-//! Per cell, the surface patches come from the cell's corner signs exactly as the marching-cubes
-//! loops do ([`patches`]): one vertex per patch, placed at the minimiser of a QEF built from the
+//! Per cell, the surface patches come from the cell's configuration (corner signs, and the
+//! asymptotic decider on ambiguous faces) exactly as the marching-cubes loops do ([`patches`]),
+//! so both methods give the same topology on the same samples: one vertex per patch, placed at the minimiser of a QEF built from the
 //! crossings of the patch's edges (points found on the real field by safeguarded Newton steps,
 //! normals from the gradient; [`crossing`], [`qef`]), solved with a rank-revealing
 //! eigen-decomposition about the mass point and clamped into the cell. Every sign-changing grid
@@ -165,5 +166,7 @@ fn write(positions: &[DVec3], triangles: &[[u32; 3]], sink: &mut impl MeshSink) 
 mod tests;
 #[cfg(test)]
 mod tests_accuracy;
+#[cfg(test)]
+mod tests_checkerboard;
 #[cfg(test)]
 mod tests_manifold;

@@ -13,7 +13,7 @@ use solidkit_kernel::Solid;
 use solidkit_kernel::models::{SplitMix64, gyroid_sphere};
 
 /// Trilinear interpolation of grid samples: continuous, with the samples' signs, and a gradient.
-struct Trilinear<'a>(&'a SampleGrid);
+pub(super) struct Trilinear<'a>(pub &'a SampleGrid);
 
 impl DcField for Trilinear<'_> {
     type Scratch = ();
@@ -46,7 +46,7 @@ impl DcField for Trilinear<'_> {
 }
 
 #[track_caller]
-fn assert_dual_of_mc(dc: &IndexedMesh, mc: &IndexedMesh, what: &str) -> TopologyReport {
+pub(super) fn assert_dual_of_mc(dc: &IndexedMesh, mc: &IndexedMesh, what: &str) -> TopologyReport {
     let r = TopologyReport::of(dc);
     let m = TopologyReport::of(mc);
     assert!(
@@ -70,11 +70,11 @@ fn assert_dual_of_mc(dc: &IndexedMesh, mc: &IndexedMesh, what: &str) -> Topology
 
 /// Meshes with self-intersecting triangle pairs: `(what, pairs, first example)`.
 #[derive(Default)]
-struct Crossings(Vec<(String, usize, Option<[u32; 2]>)>);
+pub(super) struct Crossings(Vec<(String, usize, Option<[u32; 2]>)>);
 
 impl Crossings {
     /// Records `r`'s self-intersections (the count must have been computed).
-    fn note(&mut self, r: &TopologyReport, what: &str) {
+    pub(super) fn note(&mut self, r: &TopologyReport, what: &str) {
         let n = r.self_intersections.expect("self-intersections counted");
         if n > 0 {
             self.0.push((
@@ -87,7 +87,7 @@ impl Crossings {
 
     /// Fails listing every mesh with self-intersections.
     #[track_caller]
-    fn assert_none(&self, what: &str) {
+    pub(super) fn assert_none(&self, what: &str) {
         let pairs: usize = self.0.iter().map(|c| c.1).sum();
         assert!(
             self.0.is_empty(),
