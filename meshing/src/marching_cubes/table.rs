@@ -59,6 +59,8 @@ pub struct CaseTable {
     pub centre_loop: Vec<u8>,
     /// `ambiguous[mask]`: bit `2·axis + side` set when that face has diagonal inside corners.
     pub ambiguous: [u8; 256],
+    /// `deciders[mask]`: the ambiguous faces with their corners in decider order.
+    deciders: Vec<Deciders>,
 }
 
 static TABLE: LazyLock<CaseTable> = LazyLock::new(build);
@@ -103,27 +105,40 @@ impl CaseTable {
     /// [`corner_offset`]), with the sign `mask` already computed from them.
     #[inline]
     pub fn cell_config(&self, mask: usize, value: impl Fn(u8) -> f32) -> usize {
-        let amb = self.ambiguous[mask];
-        if amb == 0 {
-            return mask;
-        }
+        let faces = &self.deciders[mask];
         let mut joined = 0u8;
-        for (bit, f) in FACES.iter().enumerate() {
-            if amb >> bit & 1 == 1 {
-                // The face's corners in walk order; its inside diagonal is the one holding f[0]
-                // when f[0] is inside, else the other.
-                let v = f.map(&value);
-                let (a, c, b, d) = if mask >> f[0] & 1 == 1 {
-                    (v[0], v[2], v[1], v[3])
-                } else {
-                    (v[1], v[3], v[0], v[2])
-                };
-                if face_joined(a, c, b, d) {
-                    joined |= 1 << bit;
-                }
+        for &(bit, [a, c, b, d]) in &faces.faces[..usize::from(faces.count)] {
+            if face_joined(value(a), value(c), value(b), value(d)) {
+                joined |= 1 << bit;
             }
         }
         mask | usize::from(joined) << 8
+    }
+}
+
+/// The ambiguous faces of one sign mask, ready for the decider: `(bit, [a, c, b, d])` with `a`,
+/// `c` the inside diagonal's corners and `b`, `d` the outside one's.
+#[derive(Debug, Clone, Copy, Default)]
+pub struct Deciders {
+    count: u8,
+    faces: [(u8, [u8; 4]); 6],
+}
+
+impl Deciders {
+    fn of(mask: u8) -> Self {
+        let mut out = Self::default();
+        for (bit, &f) in FACES.iter().enumerate() {
+            if is_ambiguous(mask, f) {
+                let corners = if mask >> f[0] & 1 == 1 {
+                    [f[0], f[2], f[1], f[3]]
+                } else {
+                    [f[1], f[3], f[0], f[2]]
+                };
+                out.faces[usize::from(out.count)] = (bit as u8, corners);
+                out.count += 1;
+            }
+        }
+        out
     }
 }
 
@@ -246,6 +261,7 @@ fn build() -> CaseTable {
     }
     starts.push(triangles.len() as u32);
     CaseTable {
+        deciders: (0..=255u8).map(Deciders::of).collect(),
         triangles,
         starts,
         loop_sets,
