@@ -139,6 +139,10 @@ pub struct MeshArgs {
     /// Skip the self-intersection count of the report.
     #[arg(long)]
     pub no_self_intersections: bool,
+    /// No progress bar (one is drawn on standard error when it is a terminal and meshing takes
+    /// more than half a second).
+    #[arg(long)]
+    pub no_progress: bool,
 }
 
 /// `--facets`: round primitives of `.csg` inputs.

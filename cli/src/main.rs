@@ -7,6 +7,7 @@ mod args;
 mod commands;
 mod frontends;
 mod input;
+mod progress;
 mod report;
 
 use clap::Parser;

@@ -1,6 +1,7 @@
 //! `solidkit mesh`: tree → field → marching cubes → report (and mesh file).
 
 use crate::args::{MeshArgs, Method};
+use crate::progress::MeshProgress;
 use crate::{input, report};
 use anyhow::{Result, anyhow};
 use glam::DVec3;
@@ -44,16 +45,22 @@ pub fn run(a: &MeshArgs) -> Result<u8> {
         .map_err(|e| anyhow!("{}: {e}", a.input.display()))?;
     let start = Instant::now();
     let program = solid.compile();
+    let progress = MeshProgress::new(!a.no_progress);
+    let sparse = SparseOptions {
+        progress: Some(progress.callback()),
+        ..SparseOptions::default()
+    };
     let (mesh, stats) = match a.method {
-        Method::Mc => mesh_sparse(&program, spec, &SparseOptions::default())?,
+        Method::Mc => mesh_sparse(&program, spec, &sparse)?,
         Method::Dc => {
             let opts = DcOptions {
                 tolerance: a.tolerance,
-                ..DcOptions::default()
+                sparse,
             };
             mesh_dc(&program, spec, &opts)?
         }
     };
+    progress.finish();
     let time_s = start.elapsed().as_secs_f64();
     let options = ReportOptions {
         self_intersections: !a.no_self_intersections,

@@ -17,7 +17,7 @@ mod subdivide;
 
 /// The surface leaf bricks with their pruned programs (also used by dual contouring).
 pub(crate) use brick::BoxSamples;
-pub use control::{CancelToken, Cancelled, MeshStats, Progress, SparseOptions};
+pub use control::{CancelToken, Cancelled, MeshStats, Progress, ProgressFn, SparseOptions};
 pub(crate) use subdivide::surface_bricks as surface_nodes;
 
 use crate::IndexedMesh;
