@@ -18,14 +18,15 @@ timed (solidkit: `bench --repeat inner+1`, the first run dropped).
 
 Every mesh is checked (xcheck/speed_check.py: closed oriented 2-manifold, exact genus where
 known, volume within the grid tolerance of the reference volume); a ratio is only printed for
-meshes that passed. A system whose warm-up round takes longer than `--slow` seconds gets only as
-many timed rounds as fit in `--slow-budget` seconds (at least one); the `runs` column says how many.
+meshes that passed. A reference whose warm-up round takes longer than `--slow` seconds gets only
+as many timed rounds as fit in `--slow-budget` seconds (at least one; solidkit, the denominator of
+every ratio, always gets all); the `runs` column says how many.
 
 Writes target/crosscheck/bench_peers.md (and .json with every round) and prints the table.
 Not a pytest test (pytest collects test_*.py only).
 
   target/crosscheck-venv/bin/python tests/crosscheck/bench_peers.py [--repeat 5] [--threads 1|all]
-      [--cases sphere,menger-3 …] [--inner 1]
+      [--cases sphere,menger-3,gyroid-sphere:480 …] [--inner 1]
 """
 import argparse
 import dataclasses
@@ -77,7 +78,9 @@ def solidkit_round(case, opts) -> dict:
     mesh_check = speed_check.judge(case, rep["closed"], rep["manifold"], rep["genus"],
                                    rep["volume"], rep["area"], case.cell)
     if not mesh_check["ok"]:
-        check = {**mesh_check, "problems": ["solidkit mesh: " + p for p in mesh_check["problems"]]}
+        problems = ["bench: " + p for p in check["problems"]]
+        problems += ["mesh cmd: " + p for p in mesh_check["problems"]]
+        check = {**check, "ok": False, "problems": problems}
     return {
         "method": "sparse marching cubes (bench); mesh FIXTURE (process)",
         "mesh_s": statistics.median(bench["times_s"][1:]),
@@ -133,13 +136,31 @@ def run_case(case, opts, log) -> dict:
                 f"process {r['process_s']:.3f} s")
             if k == 0:
                 checks[system] = r["check"]
-                if cost > opts["slow"]:
+                if cost > opts["slow"] and system != speed_cases.SOLIDKIT:
                     allowed[system] = max(1, min(opts["repeat"], int(opts["slow_budget"] // cost)))
                 continue
             if r["check"] is None:
                 r["check"] = checks.get(system)
             rounds[system].append(r)
     return {"rounds": rounds, "errors": errors}
+
+
+def parse_cases(text: str) -> list:
+    """`MODEL:R` items (comma-separated) or model names (their default resolutions); all the
+    defaults when empty."""
+    out = []
+    for item in (x.strip() for x in text.split(",") if x.strip()):
+        if ":" in item:
+            model, r = item.split(":", 1)
+            if not r.isdigit() or int(r) < 2:
+                raise ValueError(f"'{item}': expected MODEL:RESOLUTION")
+            out.append((model, int(r)))
+        else:
+            found = [d for d in speed_cases.DEFAULT if d[0] == item]
+            if not found:
+                raise ValueError(f"'{item}': not a default case (give MODEL:RESOLUTION)")
+            out.extend(found)
+    return out or list(speed_cases.DEFAULT)
 
 
 def machine_info(opts) -> dict:
@@ -184,11 +205,13 @@ def main(argv=None) -> int:
     p.add_argument("--inner", type=int, default=1, help="timed builds per process after its warm-up build")
     p.add_argument("--threads", choices=["1", "all"], default="1",
                    help="1: every process pinned to core 0 (default); all: unpinned, all cores")
-    p.add_argument("--cases", default="", help="case name prefixes, comma-separated (default: all)")
+    p.add_argument("--cases", default="",
+                   help="MODEL:R (R cells over the bench domain; sphere: R a multiple of 5, gyroid-sphere: of 6, "
+                        "menger-L: of 17) or a model name for its default cases, comma-separated (default: all)")
     p.add_argument("--warm-limit", type=float, default=5.0,
                    help="a first build slower than this (s) is not repeated in its process")
     p.add_argument("--slow", type=float, default=15.0, help="warm-up round time (s) above which a system gets fewer rounds")
-    p.add_argument("--slow-budget", type=float, default=60.0, help="seconds of timed rounds for such a system")
+    p.add_argument("--slow-budget", type=float, default=45.0, help="seconds of timed rounds for such a system")
     p.add_argument("--out", type=Path, default=None, help="output folder (default target/crosscheck)")
     a = p.parse_args(argv)
     if not paths.solidkit_bin().exists():
@@ -204,14 +227,17 @@ def main(argv=None) -> int:
     started = time.time()
     info = machine_info(opts)
     info["load average at start"] = _load()
-    prefixes = [c for c in a.cases.split(",") if c]
-    gv, how = float("nan"), "not computed"
-    if not prefixes or any(x.startswith("gyroid") for x in prefixes):
-        log("gyroid-sphere reference volume (Monte Carlo, 2e7 samples) …")
-        gv, ge = speed_cases.reference_volume()
-        how = f"Monte Carlo over the exact field, 2e7 samples: {gv:.5f} ± {ge:.5f}"
-    cases = [c for c in speed_cases.default_cases(gv, how)
-             if not prefixes or any(c.name.startswith(x) for x in prefixes)]
+    try:
+        specs = parse_cases(a.cases)
+        gv, how = float("nan"), "not computed"
+        if any(m.startswith("gyroid") for m, _ in specs):
+            log("gyroid-sphere reference volume (Monte Carlo, 2e7 samples) …")
+            gv, ge = speed_cases.reference_volume()
+            how = f"Monte Carlo over the exact field, 2e7 samples: {gv:.5f} ± {ge:.5f}"
+        cases = [speed_cases.case(m, r, gv, how) for m, r in specs]
+    except ValueError as e:
+        print(f"error: --cases: {e}", file=sys.stderr)
+        return 2
     results, summaries = {}, {}
     for case in cases:
         log(f"{case.name}: h = {case.cell:.6g}, bench R = {case.bench_resolution}, mesh N = {case.mesh_resolution}")

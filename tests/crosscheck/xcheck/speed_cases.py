@@ -118,14 +118,27 @@ def reference_volume(samples: int = 20_000_000, seed: int = 1) -> tuple:
     return frac * box, box * math.sqrt(frac * (1 - frac) / samples)
 
 
-def default_cases(gyroid_volume: float, gyroid_how: str) -> list:
-    """The default run: each family at two spacings; the Python-callback level set only where it
-    finishes in seconds (a few million callbacks)."""
-    return [
-        sphere(160, [SOLIDKIT, OPENVDB_SPHERE, MANIFOLD_LEVEL_SET]),
-        sphere(640, [SOLIDKIT, OPENVDB_SPHERE]),
-        gyroid(240, [SOLIDKIT, OPENVDB_FIELD, MANIFOLD_LEVEL_SET], gyroid_volume, gyroid_how),
-        gyroid(480, [SOLIDKIT, OPENVDB_FIELD], gyroid_volume, gyroid_how),
-        menger(3, 136, [SOLIDKIT, OPENVDB_CSG, MANIFOLD_EXACT]),
-        menger(3, 272, [SOLIDKIT, OPENVDB_CSG, MANIFOLD_EXACT]),
-    ]
+# The Python-callback level set only where it finishes in well under a minute.
+MANIFOLD_LEVEL_SET_MAX = {"sphere": 200, "gyroid-sphere": 240}
+
+
+def case(model: str, resolution: int, volume: float = None, how: str = "") -> Case:
+    """The case of `model` at R = `resolution` with every system that builds it natively."""
+    if model == "sphere":
+        systems = [SOLIDKIT, OPENVDB_SPHERE]
+    elif model == "gyroid-sphere":
+        systems = [SOLIDKIT, OPENVDB_FIELD]
+    elif model.startswith("menger-"):
+        return menger(int(model.split("-", 1)[1]), resolution, [SOLIDKIT, OPENVDB_CSG, MANIFOLD_EXACT])
+    else:
+        raise ValueError(f"unknown model '{model}' (sphere, gyroid-sphere, menger-L)")
+    if resolution <= MANIFOLD_LEVEL_SET_MAX[model]:
+        systems.append(MANIFOLD_LEVEL_SET)
+    if model == "sphere":
+        return sphere(resolution, systems)
+    return gyroid(resolution, systems, volume, how)
+
+
+# The default run: each model at two spacings (about 9 minutes on one core).
+DEFAULT = [("sphere", 160), ("sphere", 640), ("gyroid-sphere", 240), ("gyroid-sphere", 360),
+           ("menger-3", 136), ("menger-3", 272)]
