@@ -183,7 +183,7 @@ def machine_info(opts) -> dict:
     exe = str(paths.solidkit_bin())
     info["solidkit"] = _run([exe, "--version"]).stdout.strip() + f" ({exe})"
     git = _run(["git", "-C", str(paths.ROOT), "rev-parse", "--short", "HEAD"])
-    info["commit"] = git.stdout.strip() or "?"
+    info["repository commit"] = git.stdout.strip() or "?"
     return info
 
 
