@@ -13,7 +13,7 @@ standard error).
 """
 import json
 import math
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 
 import numpy as np
 
@@ -47,7 +47,6 @@ class Case:
     volume_how: str
     genus: int = None        # exact genus (summed over shells), None when not known
     systems: tuple = ()
-    notes: dict = field(default_factory=dict)
 
     @property
     def box(self):
