@@ -28,8 +28,9 @@ class Context:
 
     @property
     def cell(self) -> float:
-        """solidkit's cell: N cells over the longest side padded by one cell each end."""
-        return self.longest / (self.resolution - 2)
+        """solidkit's cell: the longest side of the solid's box over N (the grid then adds one
+        padding cell at each end, which does not change the cell)."""
+        return self.longest / self.resolution
 
     def param(self, key: str, default):
         return self.params.get(key, default)
