@@ -18,7 +18,8 @@ impl MeshTree {
     }
 }
 
-/// The point of triangle `abc` nearest to `q` (the kernel's shared computation).
+/// The point of triangle `abc` nearest to `q` (the kernel's shared computation), for the tests.
+#[cfg(test)]
 pub(crate) fn closest_point(q: DVec3, a: DVec3, b: DVec3, c: DVec3) -> DVec3 {
     crate::closest::closest_point_on_triangle(q, [a, b, c])
 }
