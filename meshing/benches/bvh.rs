@@ -31,7 +31,12 @@ fn bvh(c: &mut Criterion) {
     let (mesh, _) = mesh_sparse(&program, grid(128), &SparseOptions::default()).expect("mesh");
     let (other, _) = mesh_dc(&program, grid(112), &DcOptions::default()).expect("mesh");
     let samples = SurfaceSamples::of(&other, 100_000);
-    let surface: Vec<DVec3> = samples.vertices.iter().chain(&samples.area).copied().collect();
+    let surface: Vec<DVec3> = samples
+        .vertices
+        .iter()
+        .chain(&samples.area)
+        .copied()
+        .collect();
     let (lo, hi) = (model.domain.min, model.domain.max);
     let volume: Vec<DVec3> = (0..LATTICE.pow(3))
         .map(|i| {

@@ -81,7 +81,7 @@ impl TriangleBvh {
                 let dl = box_distance2(nl.min, nl.max, q);
                 let dr = box_distance2(nr.min, nr.max, q);
                 let left_first = if dl == dr {
-                    // Twice the offsets from the box centres (the factor does not change the order).
+                    // Twice the offsets from the box centres (the factor keeps the order).
                     let cl = (nl.min + nl.max - q * 2.0).length_squared();
                     let cr = (nr.min + nr.max - q * 2.0).length_squared();
                     cl <= cr
