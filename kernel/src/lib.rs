@@ -10,6 +10,7 @@
 #![warn(missing_docs)]
 
 mod aabb;
+pub mod bvh;
 pub mod closest;
 pub mod curve;
 mod error;

@@ -15,6 +15,14 @@ pub enum PolyhedronError {
         /// The vertex index.
         vertex: usize,
     },
+    /// More triangles than a mesh solid's tree can index.
+    #[error("too many triangles: {count} (at most {max})")]
+    TooManyFaces {
+        /// Number of triangles.
+        count: usize,
+        /// The largest number allowed.
+        max: usize,
+    },
     /// A face has fewer than three corners.
     #[error("face {face} has {corners} corners (at least 3 needed)")]
     TooFewCorners {

@@ -2,10 +2,11 @@
 //! they share.
 //!
 //! Broad phase: every triangle queries the bounding volume hierarchy of the mesh
-//! ([`TriangleTree`], built on obvhs) for triangles of higher index whose boxes meet its own,
-//! in parallel (rayon) over chunks of the tree's leaf order. Narrow phase: exact triangle–triangle
-//! tests on orientation predicates, with neighbours (shared vertex or edge) counted only when
-//! they meet beyond what they share (a fold-back, a coplanar overlap); see `triangles.rs`.
+//! ([`TriangleTree`], the kernel's BVH built on obvhs) for triangles of higher index whose boxes
+//! meet its own, in parallel (rayon) over chunks of the tree's leaf order. Narrow phase: exact
+//! triangle–triangle tests on orientation predicates, with neighbours (shared vertex or edge)
+//! counted only when they meet beyond what they share (a fold-back, a coplanar overlap); see
+//! `triangles.rs`.
 //! Plain floating-point separation tests with a safe margin (`filter.rs`) settle most pairs
 //! before any exact predicate: in flat regions neighbours are exactly coplanar, and an exact
 //! zero is the slowest case of adaptive predicates.
@@ -69,7 +70,7 @@ pub fn self_intersections(
         .into_par_iter()
         .map(|s| Tri::new(tree.slot_corners(s)))
         .collect();
-    let leaves = tree.leaves();
+    let leaves = tree.bvh().leaves();
     let total = leaves
         .par_chunks(CHUNK)
         .map_init(Scratch::default, |scratch, chunk| {
@@ -88,7 +89,6 @@ pub fn self_intersections(
 /// Reusable buffers of one worker.
 #[derive(Debug, Default)]
 struct Scratch {
-    stack: Vec<u32>,
     candidates: Vec<usize>,
     hits: Vec<[u32; 2]>,
 }
@@ -112,13 +112,10 @@ fn leaf_pairs(
     else {
         return;
     };
-    let Scratch {
-        stack,
-        candidates,
-        hits,
-    } = scratch;
+    let Scratch { candidates, hits } = scratch;
     candidates.clear();
-    tree.for_each_overlap(leaf_box, stack, |other| {
+    let [leaf_lo, leaf_hi] = leaf_box;
+    tree.bvh().for_each_overlap(leaf_lo, leaf_hi, |other| {
         if tris[other].is_some() {
             candidates.push(other);
         }

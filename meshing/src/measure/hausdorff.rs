@@ -13,7 +13,7 @@
 use glam::DVec3;
 use rayon::prelude::*;
 
-use super::tree::{Queue, TriangleTree};
+use super::tree::TriangleTree;
 use super::{MeasureError, SurfaceSamples};
 use crate::IndexedMesh;
 
@@ -48,11 +48,11 @@ pub struct Hausdorff {
 pub fn one_sided(points: &[DVec3], tree: &TriangleTree) -> OneSided {
     let partials: Vec<(f64, f64, DVec3)> = points
         .par_chunks(CHUNK)
-        .map_init(Queue::new, |queue, chunk| {
+        .map(|chunk| {
             let mut sum = 0.0;
             let (mut max, mut farthest) = (f64::NEG_INFINITY, DVec3::ZERO);
             for &p in chunk {
-                let d = tree.nearest_with(p, queue).distance;
+                let d = tree.nearest(p).distance;
                 sum += d;
                 if d > max {
                     (max, farthest) = (d, p);

@@ -1,5 +1,5 @@
-//! Distance measures between surfaces: the nearest point of a mesh to a query point (a bounding
-//! volume hierarchy from `obvhs` with a best-first traversal, [`TriangleTree`]), the exact nearest
+//! Distance measures between surfaces: the nearest point of a mesh to a query point (the kernel's
+//! triangle bounding volume hierarchy, [`TriangleTree`]), the exact nearest
 //! point of a triangle, deterministic surface samples, and the one-sided and symmetric Hausdorff
 //! distances between meshes or from a point set (e.g. samples of an exact surface) to a mesh.
 //!

@@ -178,7 +178,7 @@ impl MeshSolid {
 
     /// Number of triangles.
     pub fn triangle_count(&self) -> usize {
-        self.tree.triangles.len()
+        self.tree.triangles().len()
     }
 
     /// Distance between the field's zero set and the mesh (0).
@@ -261,7 +261,7 @@ impl Shape for MeshSolid {
         if value != 0.0 {
             (p - near.point) / value
         } else {
-            let [a, b, c] = self.tree.triangles[near.triangle as usize];
+            let [a, b, c] = self.tree.triangles()[near.slot as usize];
             (b - a).cross(c - a).normalize_or_zero()
         }
     }

@@ -1,101 +1,25 @@
-//! The nearest point of a triangle mesh to a query point: a closest-first depth-first traversal
-//! of the [`MeshTree`] with an explicit stack (the nearer child is visited first and any node whose
-//! box is farther than the best triangle so far is skipped), and the exact point–triangle distance by
-//! Voronoi regions of the triangle (Ericson, *Real-Time Collision Detection*, 5.1.5).
-//!
-//! The stack lives in a thread-local buffer, so a query does not allocate.
+//! The nearest point of a mesh solid's triangles to a query point: the exact query of the
+//! kernel's [`TriangleBvh`](crate::bvh::TriangleBvh) on the [`MeshTree`], and the exact
+//! point–triangle distance it uses (Voronoi regions of the triangle, `crate::closest`).
 
 use super::tree::MeshTree;
+use crate::bvh::Nearest;
 use glam::DVec3;
-use std::cell::RefCell;
-
-/// The result of a nearest-point query.
-#[derive(Debug, Clone, Copy)]
-pub(crate) struct Nearest {
-    /// Squared distance to the mesh.
-    pub distance2: f64,
-    /// The nearest point on the mesh.
-    pub point: DVec3,
-    /// The (reordered) index of the triangle it lies on.
-    pub triangle: u32,
-}
-
-thread_local! {
-    static STACK: RefCell<Vec<(u32, f64)>> = const { RefCell::new(Vec::new()) };
-}
-
-/// Runs `f` with the thread's cleared traversal stack (a fresh one if it is in use).
-fn with_stack<R>(f: impl FnOnce(&mut Vec<(u32, f64)>) -> R) -> R {
-    STACK.with(|cell| match cell.try_borrow_mut() {
-        Ok(mut stack) => {
-            stack.clear();
-            f(&mut stack)
-        }
-        Err(_) => f(&mut Vec::new()),
-    })
-}
-
-/// Squared distance from `q` to the box `[lo, hi]` (0 inside).
-fn box_distance2(lo: DVec3, hi: DVec3, q: DVec3) -> f64 {
-    let d = (lo - q).max(q - hi).max(DVec3::ZERO);
-    d.length_squared()
-}
 
 impl MeshTree {
-    /// The nearest point of the mesh to `q`.
+    /// The nearest point of the mesh to `q` (its `slot` indexes [`MeshTree::triangles`]).
     pub(crate) fn nearest(&self, q: DVec3) -> Nearest {
-        let mut best = Nearest {
+        // The tree always has triangles (checked when made); an empty one would be infinitely far.
+        self.bvh.nearest(q).unwrap_or(Nearest {
             distance2: f64::INFINITY,
             point: q,
-            triangle: 0,
-        };
-        with_stack(|stack| {
-            let root = &self.nodes[0];
-            stack.push((0, box_distance2(root.min, root.max, q)));
-            while let Some((index, d2)) = stack.pop() {
-                if d2 >= best.distance2 {
-                    continue;
-                }
-                let node = &self.nodes[index as usize];
-                if node.count > 0 {
-                    let run = node.first..node.first + node.count;
-                    for t in run {
-                        let [a, b, c] = self.triangles[t as usize];
-                        let p = closest_point(q, a, b, c);
-                        let d2 = (p - q).length_squared();
-                        if d2 < best.distance2 {
-                            best = Nearest {
-                                distance2: d2,
-                                point: p,
-                                triangle: t,
-                            };
-                        }
-                    }
-                    continue;
-                }
-                let (l, r) = (node.first, node.first + 1);
-                let (nl, nr) = (&self.nodes[l as usize], &self.nodes[r as usize]);
-                let dl = box_distance2(nl.min, nl.max, q);
-                let dr = box_distance2(nr.min, nr.max, q);
-                // Push the farther child first so the nearer one is visited next.
-                let (near, far) = if dl <= dr {
-                    ((l, dl), (r, dr))
-                } else {
-                    ((r, dr), (l, dl))
-                };
-                if far.1 < best.distance2 {
-                    stack.push(far);
-                }
-                if near.1 < best.distance2 {
-                    stack.push(near);
-                }
-            }
-        });
-        best
+            slot: 0,
+        })
     }
 }
 
-/// The point of triangle `abc` nearest to `q` (the kernel's shared computation).
+/// The point of triangle `abc` nearest to `q` (the kernel's shared computation), for the tests.
+#[cfg(test)]
 pub(crate) fn closest_point(q: DVec3, a: DVec3, b: DVec3, c: DVec3) -> DVec3 {
     crate::closest::closest_point_on_triangle(q, [a, b, c])
 }

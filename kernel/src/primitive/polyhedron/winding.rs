@@ -56,15 +56,14 @@ impl MeshTree {
         with_stack(|stack| {
             stack.push(0);
             while let Some(index) = stack.pop() {
-                let node = &self.nodes[index as usize];
+                let node = &self.bvh.nodes()[index as usize];
                 let dipole = &self.dipoles[index as usize];
                 let d = dipole.center - q;
                 let dist2 = d.length_squared();
                 if dist2 > (BETA * dipole.radius) * (BETA * dipole.radius) {
                     omega += dipole.area.dot(d) / (dist2 * dist2.sqrt());
-                } else if node.count > 0 {
-                    for t in node.first..node.first + node.count {
-                        let [a, b, c] = self.triangles[t as usize];
+                } else if node.is_leaf() {
+                    for &[a, b, c] in &self.triangles()[node.slots()] {
                         omega += solid_angle(a - q, b - q, c - q);
                     }
                 } else {
@@ -79,7 +78,7 @@ impl MeshTree {
     /// The exact winding number by summing every triangle's solid angle (for tests).
     #[cfg(test)]
     pub(crate) fn winding_number_exact(&self, q: DVec3) -> f64 {
-        self.triangles
+        self.triangles()
             .iter()
             .map(|[a, b, c]| solid_angle(*a - q, *b - q, *c - q))
             .sum::<f64>()
