@@ -136,3 +136,19 @@ impl std::fmt::Debug for TriangleBvh {
 pub(crate) fn box_distance2(lo: DVec3, hi: DVec3, q: DVec3) -> f64 {
     (lo - q).max(q - hi).max(DVec3::ZERO).length_squared()
 }
+
+/// Runs `f` with the thread's scratch vector behind `key`, cleared (a fresh one if it is in use,
+/// e.g. by a query made from inside another query's callback). The traversal stacks of the tree
+/// queries live in such buffers, so a query does not allocate.
+pub(crate) fn with_scratch<T: 'static, R>(
+    key: &'static std::thread::LocalKey<std::cell::RefCell<Vec<T>>>,
+    f: impl FnOnce(&mut Vec<T>) -> R,
+) -> R {
+    key.with(|cell| match cell.try_borrow_mut() {
+        Ok(mut v) => {
+            v.clear();
+            f(&mut v)
+        }
+        Err(_) => f(&mut Vec::new()),
+    })
+}

@@ -14,7 +14,7 @@
 //! meshes of the same surface (where a plain left-first order on ties was 8–10 % slower).
 //! `cargo bench -p solidkit-meshing --bench bvh` times both kinds of query.
 
-use super::{TriangleBvh, box_distance2};
+use super::{TriangleBvh, box_distance2, with_scratch};
 use crate::closest::closest_point_on_triangle;
 use glam::DVec3;
 use std::cell::RefCell;
@@ -34,17 +34,6 @@ thread_local! {
     static STACK: RefCell<Vec<(u32, f64)>> = const { RefCell::new(Vec::new()) };
 }
 
-/// Runs `f` with the thread's cleared traversal stack (a fresh one if it is in use).
-fn with_stack<R>(f: impl FnOnce(&mut Vec<(u32, f64)>) -> R) -> R {
-    STACK.with(|cell| match cell.try_borrow_mut() {
-        Ok(mut stack) => {
-            stack.clear();
-            f(&mut stack)
-        }
-        Err(_) => f(&mut Vec::new()),
-    })
-}
-
 impl TriangleBvh {
     /// The nearest point of the triangles to `q` (`None` for an empty tree). On exact ties the
     /// triangle reported is one of the nearest.
@@ -55,7 +44,7 @@ impl TriangleBvh {
             point: q,
             slot: 0,
         };
-        with_stack(|stack| {
+        with_scratch(&STACK, |stack| {
             stack.push((0, box_distance2(root.min, root.max, q)));
             while let Some((index, d2)) = stack.pop() {
                 if d2 >= best.distance2 {

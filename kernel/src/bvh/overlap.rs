@@ -2,25 +2,13 @@
 //! meets a given box (explicit stack in a thread-local buffer). These drive the self-intersection
 //! broad phase of the meshing crate: one overlap query per leaf box.
 
-use super::TriangleBvh;
+use super::{TriangleBvh, with_scratch};
 use glam::DVec3;
 use std::cell::RefCell;
 use std::ops::Range;
 
 thread_local! {
     static STACK: RefCell<Vec<u32>> = const { RefCell::new(Vec::new()) };
-}
-
-/// Runs `f` with the thread's cleared stack (a fresh one if it is in use, e.g. by a query made
-/// from inside another query's callback).
-fn with_stack<R>(f: impl FnOnce(&mut Vec<u32>) -> R) -> R {
-    STACK.with(|cell| match cell.try_borrow_mut() {
-        Ok(mut stack) => {
-            stack.clear();
-            f(&mut stack)
-        }
-        Err(_) => f(&mut Vec::new()),
-    })
 }
 
 /// True when the closed boxes `[lo, hi]` and `[l, h]` meet.
@@ -47,7 +35,7 @@ impl TriangleBvh {
         if self.nodes.is_empty() {
             return;
         }
-        with_stack(|stack| {
+        with_scratch(&STACK, |stack| {
             stack.push(0);
             while let Some(i) = stack.pop() {
                 let node = &self.nodes[i as usize];

@@ -15,6 +15,7 @@
 //! that would flip a classification; a query costs about 2 µs there.
 
 use super::tree::MeshTree;
+use crate::bvh::with_scratch;
 use glam::DVec3;
 use std::cell::RefCell;
 use std::f64::consts::PI;
@@ -24,16 +25,6 @@ const BETA: f64 = 2.0;
 
 thread_local! {
     static STACK: RefCell<Vec<u32>> = const { RefCell::new(Vec::new()) };
-}
-
-fn with_stack<R>(f: impl FnOnce(&mut Vec<u32>) -> R) -> R {
-    STACK.with(|cell| match cell.try_borrow_mut() {
-        Ok(mut stack) => {
-            stack.clear();
-            f(&mut stack)
-        }
-        Err(_) => f(&mut Vec::new()),
-    })
 }
 
 /// Signed solid angle of triangle `abc` seen from the origin (corners relative to the query
@@ -53,7 +44,7 @@ impl MeshTree {
             return 0.0;
         }
         let mut omega = 0.0;
-        with_stack(|stack| {
+        with_scratch(&STACK, |stack| {
             stack.push(0);
             while let Some(index) = stack.pop() {
                 let node = &self.bvh.nodes()[index as usize];
