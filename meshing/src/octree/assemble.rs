@@ -97,19 +97,12 @@ pub(crate) fn assemble(
         .iter()
         .map(|t| vec![0; t.centre_rows.len()])
         .collect();
-    for k in 0..cells[2] {
-        let (bk, kl) = (k / brick, k % brick);
-        for j in 0..cells[1] {
-            let (bj, jl) = (j / brick, j % brick);
-            for &b in rows.get(&(bk, bj)).map_or(no_bricks, Vec::as_slice) {
-                let t = &triangles[b];
-                if t.centre_rows.is_empty() {
-                    continue;
-                }
-                let r = kl * bricks[b].extent[1] + jl;
-                centre_bases[b][r] = count;
-                count += t.centre_rows[r + 1] - t.centre_rows[r];
-            }
+    let extents: Vec<[usize; 3]> = bricks.iter().map(|o| o.extent).collect();
+    for (b, r) in cell_rows(cells, brick, &rows, &extents) {
+        let t = &triangles[b];
+        if !t.centre_rows.is_empty() {
+            centre_bases[b][r] = count;
+            count += t.centre_rows[r + 1] - t.centre_rows[r];
         }
     }
     // Triangle corners to vertex numbers, brick by brick in parallel, consuming the local lists.
@@ -168,36 +161,39 @@ pub(crate) fn assemble(
         );
     }
     debug_assert_eq!(ids.len(), edge_vertices as usize);
-    let extents: Vec<[usize; 3]> = bricks.iter().map(|o| o.extent).collect();
     drop((bricks, bases, order, index));
-    for k in 0..cells[2] {
-        let (bk, kl) = (k / brick, k % brick);
-        for j in 0..cells[1] {
-            let (bj, jl) = (j / brick, j % brick);
-            for &b in rows.get(&(bk, bj)).map_or(no_bricks, Vec::as_slice) {
-                let (_, _, centres, centre_rows) = &resolved[b];
-                if centre_rows.is_empty() {
-                    continue;
-                }
-                let r = kl * extents[b][1] + jl;
-                let span = centre_rows[r] as usize..centre_rows[r + 1] as usize;
-                ids.extend(centres[span].iter().map(|p| sink.add_vertex(p.as_dvec3())));
-            }
+    for (b, r) in cell_rows(cells, brick, &rows, &extents) {
+        let (_, _, centres, centre_rows) = &resolved[b];
+        if !centre_rows.is_empty() {
+            let span = centre_rows[r] as usize..centre_rows[r + 1] as usize;
+            ids.extend(centres[span].iter().map(|p| sink.add_vertex(p.as_dvec3())));
         }
     }
-    for k in 0..cells[2] {
-        let (bk, kl) = (k / brick, k % brick);
-        for j in 0..cells[1] {
-            let (bj, jl) = (j / brick, j % brick);
-            for &b in rows.get(&(bk, bj)).map_or(no_bricks, Vec::as_slice) {
-                let (tris, tri_rows, _, _) = &resolved[b];
-                let r = kl * extents[b][1] + jl;
-                for t in &tris[tri_rows[r] as usize..tri_rows[r + 1] as usize] {
-                    sink.add_triangle(t.map(|v| ids[v as usize]));
-                }
-            }
+    for (b, r) in cell_rows(cells, brick, &rows, &extents) {
+        let (tris, tri_rows, _, _) = &resolved[b];
+        for t in &tris[tri_rows[r] as usize..tri_rows[r + 1] as usize] {
+            sink.add_triangle(t.map(|v| ids[v as usize]));
         }
     }
+}
+
+/// Every cell row of the grid in the dense path's order (`k`, then `j`, then the bricks of the
+/// brick row in `x` order), as (brick, the brick's local cell row `kl · extent_y + jl`).
+fn cell_rows<'a>(
+    cells: [usize; 3],
+    brick: usize,
+    rows: &'a HashMap<(usize, usize), Vec<usize>>,
+    extents: &'a [[usize; 3]],
+) -> impl Iterator<Item = (usize, usize)> + 'a {
+    (0..cells[2]).flat_map(move |k| {
+        (0..cells[1]).flat_map(move |j| {
+            let (kl, jl) = (k % brick, j % brick);
+            rows.get(&(k / brick, j / brick))
+                .map_or(&[][..], Vec::as_slice)
+                .iter()
+                .map(move |&b| (b, kl * extents[b][1] + jl))
+        })
+    })
 }
 
 /// The number of the vertex on brick `b`'s local edge `id` when a neighbour owns it.
