@@ -3,7 +3,7 @@
 //! error contract; self-intersections in `check` and `mesh` (exit code, `--no-self-intersections`).
 
 use serde_json::Value;
-use solidkit_tests::{fixture, path_str};
+use solidkit_tests::{fixture, path_str, success_json};
 use std::path::Path;
 use std::process::Output;
 
@@ -14,15 +14,7 @@ fn solidkit(args: &[&str]) -> Output {
 fn compare_json(a: &Path, b: &Path, extra: &[&str]) -> Value {
     let mut args = vec!["compare", path_str(a), path_str(b), "--json"];
     args.extend_from_slice(extra);
-    let o = solidkit(&args);
-    assert_eq!(
-        o.status.code(),
-        Some(0),
-        "{}",
-        String::from_utf8_lossy(&o.stderr)
-    );
-    serde_json::from_slice(&o.stdout)
-        .unwrap_or_else(|e| panic!("{e}: {}", String::from_utf8_lossy(&o.stdout)))
+    success_json(&solidkit(&args))
 }
 
 /// The unit cube scaled by `s` about its centre, as OFF text.

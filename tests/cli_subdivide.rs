@@ -2,25 +2,13 @@
 //! OBJ, OFF and PLY, triangles in STL), the report, one-line errors with exit code 2 and no output
 //! file on failure; and `subdivide` nodes through `solidkit mesh` from JSON and Rhai.
 
-use serde_json::Value;
 use solidkit_meshing::io::{read_mesh, read_polygon_mesh};
-use solidkit_tests::{fixture, path_str};
+use solidkit_tests::{fixture, path_str, success_json};
 use std::path::Path;
 use std::process::Output;
 
 fn solidkit(args: &[&str]) -> Output {
     solidkit_tests::run_cli(env!("CARGO_BIN_EXE_solidkit"), args)
-}
-
-fn json_of(o: &Output) -> Value {
-    assert_eq!(
-        o.status.code(),
-        Some(0),
-        "{}",
-        String::from_utf8_lossy(&o.stderr)
-    );
-    serde_json::from_slice(&o.stdout)
-        .unwrap_or_else(|e| panic!("{e}: {}", String::from_utf8_lossy(&o.stdout)))
 }
 
 #[test]
@@ -40,7 +28,7 @@ fn quads_in_quads_out_and_the_report() {
             "2",
             "--json",
         ]);
-        let r = json_of(&o);
+        let r = success_json(&o);
         // 16 quads, V 16, E 32: one level gives V 64, E 128, F 64; two give V 256, E 512, F 256.
         assert_eq!(r["polygon_faces"], 256, "{ext}");
         assert_eq!(r["polygon_vertices"], 256);
@@ -57,7 +45,7 @@ fn quads_in_quads_out_and_the_report() {
         assert!(back.faces.iter().all(|f| f.len() == 4), "{ext}");
         // And `check` agrees on the written file.
         let o = solidkit(&["check", path_str(&out), "--json"]);
-        let c = json_of(&o);
+        let c = success_json(&o);
         assert_eq!(
             (c["genus"].clone(), c["closed"].clone()),
             (1.into(), true.into())
@@ -151,7 +139,7 @@ fn subdivide_nodes_mesh_from_json_and_rhai() {
     let mut volumes = Vec::new();
     for input in [&rhai, &json] {
         let o = solidkit(&["mesh", path_str(input), "--resolution", "64", "--json"]);
-        let r = json_of(&o);
+        let r = success_json(&o);
         assert_eq!(
             (r["closed"].clone(), r["manifold"].clone()),
             (true.into(), true.into())

@@ -53,6 +53,18 @@ pub fn run_cli(bin: &str, args: &[&str]) -> Output {
     Command::new(bin).args(args).output().expect("run solidkit")
 }
 
+/// The JSON a CLI run printed, asserting it exited with 0 (its standard error in the message).
+pub fn success_json(o: &Output) -> serde_json::Value {
+    assert_eq!(
+        o.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&o.stderr)
+    );
+    serde_json::from_slice(&o.stdout)
+        .unwrap_or_else(|e| panic!("{e}: {}", String::from_utf8_lossy(&o.stdout)))
+}
+
 /// A path as `&str` for command lines (test paths are UTF-8).
 pub fn path_str(p: &Path) -> &str {
     p.to_str().expect("UTF-8 path")

@@ -10,10 +10,8 @@ from pathlib import Path
 import manifold3d as mf
 import numpy as np
 
-from . import curves, meshio, subdivision, tree
+from . import curves, meshio, platonic, subdivision, tree
 from .tree import NotExpressible
-
-PHI = (1 + 5 ** 0.5) / 2
 
 
 def from_arrays(verts: np.ndarray, faces: np.ndarray) -> mf.Manifold:
@@ -235,27 +233,11 @@ def polyhedron(n: dict):
 
 
 def platonic_vertices(kind: str) -> np.ndarray:
-    """Unit-circumradius vertices from the classic coordinates (as the kernel documents)."""
-    if kind == "tetrahedron":
-        v = [[1, 1, 1], [1, -1, -1], [-1, 1, -1], [-1, -1, 1]]
-    elif kind == "cube":
-        v = [[x, y, z] for x in (-1, 1) for y in (-1, 1) for z in (-1, 1)]
-    elif kind == "octahedron":
-        v = [[s, 0, 0] for s in (-1, 1)] + [[0, s, 0] for s in (-1, 1)] + [[0, 0, s] for s in (-1, 1)]
-    elif kind == "icosahedron":
-        v = []
-        for a in (-1, 1):
-            for b in (-PHI, PHI):
-                v += [[0, a, b], [a, b, 0], [b, 0, a]]
-    elif kind == "dodecahedron":
-        v = [[x, y, z] for x in (-1, 1) for y in (-1, 1) for z in (-1, 1)]
-        for a in (-1 / PHI, 1 / PHI):
-            for b in (-PHI, PHI):
-                v += [[0, a, b], [a, b, 0], [b, 0, a]]
-    else:
-        raise NotExpressible(f"platonic solid '{kind}'")
-    v = np.array(v, dtype=np.float64)
-    return v / np.linalg.norm(v[0])
+    """Unit-circumradius vertices (xcheck.platonic); a kind nothing here builds is not expressible."""
+    try:
+        return platonic.platonic_vertices(kind)
+    except ValueError as e:
+        raise NotExpressible(str(e)) from None
 
 
 def platonic(n: dict) -> mf.Manifold:
