@@ -10,7 +10,8 @@ from pathlib import Path
 import manifold3d as mf
 import numpy as np
 
-from . import curves, meshio, platonic, subdivision, tree
+from . import curves, meshio, subdivision, tree
+from .platonic import platonic_vertices as unit_platonic_vertices
 from .tree import NotExpressible
 
 
@@ -235,7 +236,7 @@ def polyhedron(n: dict):
 def platonic_vertices(kind: str) -> np.ndarray:
     """Unit-circumradius vertices (xcheck.platonic); a kind nothing here builds is not expressible."""
     try:
-        return platonic.platonic_vertices(kind)
+        return unit_platonic_vertices(kind)
     except ValueError as e:
         raise NotExpressible(str(e)) from None
 
