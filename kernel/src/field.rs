@@ -13,6 +13,15 @@ pub trait Field: Sync {
             *o = self.value(*p);
         }
     }
+
+    /// Whether the solid contains `p + ε·d` for small `ε > 0`, with `d` the fixed direction
+    /// [`crate::program::perturb::PERTURBATION`]: how polygonizers classify a sample whose value is
+    /// zero. A [`crate::Program`] takes the exact limit by symbolic perturbation; this default
+    /// looks a short finite step (`1e-5` of the coordinate scale) along `d`.
+    fn inside_at_zero(&self, p: DVec3) -> bool {
+        let step = 1e-5 * (1.0 + p.abs().max_element());
+        self.value(p + crate::program::perturb::PERTURBATION * step) < 0.0
+    }
 }
 
 impl<F: Fn(DVec3) -> f64 + Sync> Field for F {

@@ -17,6 +17,7 @@ mod frame;
 pub mod gradients;
 pub mod interval;
 mod lower;
+pub mod perturb;
 mod regalloc;
 pub mod scalar;
 
@@ -165,3 +166,6 @@ impl Program {
 
 #[cfg(test)]
 mod tests;
+
+#[cfg(test)]
+mod perturb_tests;

@@ -105,4 +105,8 @@ impl Field for Program {
             *o = self.value_with(*p, &mut slots);
         }
     }
+
+    fn inside_at_zero(&self, p: DVec3) -> bool {
+        Program::inside_at_zero(self, p, &mut Vec::new())
+    }
 }

@@ -4,7 +4,7 @@
 
 use super::block::{Block, BlockScratch, build};
 use super::crossing::DcField;
-use crate::marching_cubes::{GridSpec, SampleGrid, inside, snap_noise};
+use crate::marching_cubes::{GridSpec, SampleGrid, inside, settle};
 use crate::octree::{BoxSamples, Cancelled, MeshStats, Progress, SparseOptions};
 use rayon::prelude::*;
 use solidkit_kernel::Program;
@@ -169,7 +169,10 @@ impl Signs for SparseSigns<'_> {
         let p = [0, 1, 2].map(|a| self.spec.coordinate(a, s[a]));
         self.program
             .eval_many(&[p[0]], &[p[1]], &[p[2]], &mut out, &mut self.batch);
-        let v = inside(snap_noise(p[0], p[1], p[2], out[0]));
+        let program = &self.program;
+        let v = inside(settle(p[0], p[1], p[2], out[0], |q| {
+            program.inside_at_zero(q, &mut Vec::new())
+        }));
         self.cache.insert(s, v);
         v
     }

@@ -1,6 +1,6 @@
 //! Uniform sampling grids: where the samples are ([`GridSpec`]) and their values ([`SampleGrid`]).
 
-use super::snap_noise;
+use super::sign::{settle, settle_field};
 use glam::DVec3;
 use rayon::prelude::*;
 use solidkit_kernel::program::BatchScratch;
@@ -156,7 +156,7 @@ impl SampleGrid {
                     field.values(&row, &mut row_values);
                     for (i, (o, v)) in out.iter_mut().zip(&row_values).enumerate() {
                         let [x, y, z] = [0, 1, 2].map(|a| spec.coordinate(a, [i, j, k][a]));
-                        *o = snap_noise(x, y, z, *v as f32);
+                        *o = settle_field(field, x, y, z, *v as f32);
                     }
                 }
             });
@@ -176,11 +176,14 @@ impl SampleGrid {
                 let x: Vec<f32> = (0..sx).map(|i| spec.coordinate(0, i)).collect();
                 let z = vec![spec.coordinate(2, k); sx];
                 let mut y = vec![0f32; sx];
+                let mut slots = Vec::new();
                 for (j, out) in slice.chunks_mut(sx).enumerate() {
                     y.fill(spec.coordinate(1, j));
                     program.eval_many(&x, &y, &z, out, &mut scratch);
                     for (i, v) in out.iter_mut().enumerate() {
-                        *v = snap_noise(x[i], y[i], z[i], *v);
+                        *v = settle(x[i], y[i], z[i], *v, |p| {
+                            program.inside_at_zero(p, &mut slots)
+                        });
                     }
                 }
             });

@@ -7,10 +7,12 @@
 
 pub mod grid;
 pub mod polygonize;
+pub mod sign;
 pub mod table;
 
 pub use grid::{GridError, GridSpec, SampleGrid};
-pub use polygonize::{EDGE_MARGIN, NOISE, edge_vertex, inside, polygonize_into, snap_noise};
+pub use polygonize::{EDGE_MARGIN, edge_vertex, polygonize_into};
+pub use sign::{INSIDE_ZERO, NOISE, inside, settle, snap_noise};
 
 use crate::IndexedMesh;
 use solidkit_kernel::Field;

@@ -2,12 +2,14 @@
 //! construction: each grid edge that changes sign gets exactly one vertex, numbered by the slice
 //! that owns the edge, and every cell using that edge refers to the same number.
 //!
-//! Sign rule: a sample is inside when its value is `< 0`; zero (and NaN) count as outside; an
-//! ambiguous face is resolved by the asymptotic decider on its four values. Vertex
+//! Sign rule: a sample is inside when its value is `< 0` (exact zeros are settled by
+//! [`super::sign`] before they get here; NaN counts as outside); an ambiguous face is resolved by
+//! the asymptotic decider on its four values. Vertex
 //! positions interpolate linearly along the edge, kept at least [`EDGE_MARGIN`] of the edge away
 //! from either end, so no two vertices coincide and no triangle is degenerate.
 
 use super::grid::SampleGrid;
+use super::sign::inside;
 use super::table::{CENTRE, NO_CENTRE, case_table, edge_origin};
 use crate::sink::MeshSink;
 use glam::DVec3;
@@ -17,29 +19,6 @@ use rayon::prelude::*;
 pub const EDGE_MARGIN: f64 = 1e-4;
 
 const NONE: u32 = u32::MAX;
-
-/// Relative size of the single-precision noise band around zero (see [`snap_noise`]).
-pub const NOISE: f32 = 1e-6;
-
-/// A sample value with single-precision noise removed: a value within
-/// `NOISE · (1 + max |coordinate|)` of zero is exactly zero. Sample positions are rounded to f32
-/// (an error of up to half an ulp of the coordinates) and evaluated in f32, so such a value has
-/// no reliable sign: a polytope vertex lying on a sample point would otherwise come out inside or
-/// outside by chance and, inside, leave a one-sample bubble of a few 1e-4-cell triangles. The
-/// band is far below the interval classifier's margin (`3e-5` of the same scale), so boxes the
-/// octree culls as inside or outside never hold a snapped sample and the sparse and dense paths
-/// still agree bit for bit.
-#[inline]
-pub fn snap_noise(x: f32, y: f32, z: f32, v: f32) -> f32 {
-    let scale = 1.0 + x.abs().max(y.abs()).max(z.abs());
-    if v.abs() <= NOISE * scale { 0.0 } else { v }
-}
-
-/// The inside test for samples (the one fixed rule for exact zeros: outside).
-#[inline]
-pub fn inside(v: f32) -> bool {
-    v < 0.0
-}
 
 /// The vertex on the edge from `pa` (value `va`) to `pb` (value `vb`), or `None` when the edge
 /// does not change sign. Shared by every polygonizer, so equal samples give equal vertices.

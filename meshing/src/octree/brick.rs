@@ -10,7 +10,7 @@
 use super::subdivide::Node;
 use crate::marching_cubes::polygonize::loop_centre;
 use crate::marching_cubes::table::{CENTRE, NO_CENTRE, case_table, edge_origin};
-use crate::marching_cubes::{GridSpec, edge_vertex, inside, snap_noise};
+use crate::marching_cubes::{GridSpec, edge_vertex, inside, settle};
 use glam::Vec3;
 use solidkit_kernel::Program;
 use solidkit_kernel::program::BatchScratch;
@@ -92,8 +92,10 @@ pub(crate) struct BoxSamples {
     x: Vec<f32>,
     y: Vec<f32>,
     z: Vec<f32>,
-    /// Values at the points, single-precision noise snapped to zero.
+    /// Values at the points, settled ([`settle`]: noise snapped, zeros signed by perturbation).
     pub values: Vec<f32>,
+    /// Scratch of the symbolic inside test at zeros.
+    zero_slots: Vec<(f64, f64)>,
 }
 
 impl BoxSamples {
@@ -125,8 +127,11 @@ impl BoxSamples {
         let start = std::time::Instant::now();
         program.eval_many(&self.x, &self.y, &self.z, &mut self.values, batch);
         let seconds = start.elapsed().as_secs_f64();
+        let slots = &mut self.zero_slots;
         for (i, v) in self.values.iter_mut().enumerate() {
-            *v = snap_noise(self.x[i], self.y[i], self.z[i], *v);
+            *v = settle(self.x[i], self.y[i], self.z[i], *v, |p| {
+                program.inside_at_zero(p, slots)
+            });
         }
         seconds
     }

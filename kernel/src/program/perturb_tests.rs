@@ -1,0 +1,143 @@
+//! Tests of the symbolic inside test at zeros: shared faces inside unions are inside, flush
+//! cutters' faces are outside, creases and corners take the exact one-sided sign, the direction
+//! is generic for lattice models, and a pruned program settles every zero as the full one does.
+
+use super::perturb::PERTURBATION;
+use super::{IntervalScratch, Pruned};
+use crate::primitive::conformance::Rng;
+use crate::{Aabb, Solid};
+use glam::DVec3;
+
+fn unit_box_at(x: f64, y: f64, z: f64) -> Solid {
+    Solid::cuboid(DVec3::ONE).translate(DVec3::new(x, y, z) + DVec3::splat(0.5))
+}
+
+fn inside(s: &Solid, p: DVec3) -> bool {
+    s.compile().inside_at_zero(p, &mut Vec::new())
+}
+
+#[test]
+fn perturbation_is_a_generic_unit_direction() {
+    assert!((PERTURBATION.length() - 1.0).abs() < 1e-15);
+    // No plane with a small-integer normal contains it: never tangent to a lattice face.
+    for a in -4i32..=4 {
+        for b in -4i32..=4 {
+            for c in -4i32..=4 {
+                if (a, b, c) != (0, 0, 0) {
+                    let n = DVec3::new(a as f64, b as f64, c as f64).normalize();
+                    assert!(n.dot(PERTURBATION).abs() > 1e-2, "{a} {b} {c}");
+                }
+            }
+        }
+    }
+}
+
+#[test]
+fn shared_face_of_a_union_is_inside() {
+    let u = unit_box_at(0.0, 0.0, 0.0).union(&unit_box_at(1.0, 0.0, 0.0));
+    let p = DVec3::new(1.0, 0.5, 0.5);
+    assert_eq!(u.compile().value(p), 0.0);
+    assert!(inside(&u, p));
+    // The outer faces follow the direction: the step goes into the solid at the lower faces
+    // and out of it at the upper ones.
+    assert!(inside(&u, DVec3::new(0.0, 0.5, 0.5)));
+    assert!(!inside(&u, DVec3::new(2.0, 0.5, 0.5)));
+    // An edge shared by four boxes of a stack, and a corner shared by eight.
+    let stack = Solid::union_all(
+        (0..8).map(|i| unit_box_at((i & 1) as f64, (i >> 1 & 1) as f64, (i >> 2) as f64)),
+    );
+    assert!(inside(&stack, DVec3::new(1.0, 1.0, 0.5)));
+    assert!(inside(&stack, DVec3::ONE));
+}
+
+#[test]
+fn flush_cutter_face_is_outside() {
+    let plate = Solid::cuboid(DVec3::new(4.0, 4.0, 1.0)).translate(DVec3::new(0.0, 0.0, 0.5));
+    let cutter = Solid::cylinder(0.5, 1.0).translate(DVec3::new(0.0, 0.0, 0.5));
+    let holed = plate.difference(&cutter);
+    for z in [0.0, 1.0] {
+        let p = DVec3::new(0.1, -0.2, z);
+        assert_eq!(holed.compile().value(p), 0.0);
+        assert!(!inside(&holed, p), "skin over the hole at z = {z}");
+    }
+    // The same cutter flush with a face from outside leaves the face where it was.
+    let touching = plate.difference(&cutter.translate(DVec3::Z));
+    assert!(inside(&touching, DVec3::new(0.1, 0.1, 0.0)));
+    assert!(!inside(&touching, DVec3::new(0.1, 0.1, 1.0)));
+}
+
+#[test]
+fn creases_and_corners_take_the_one_sided_sign() {
+    // A corner of a box: inside only when the direction points into the box's octant.
+    let b = unit_box_at(0.0, 0.0, 0.0);
+    let d = PERTURBATION;
+    for (corner, expect) in [
+        (DVec3::ZERO, true),
+        (DVec3::X, false),
+        (DVec3::Y, false),
+        (DVec3::Z, false),
+        (DVec3::ONE, false),
+    ] {
+        assert_eq!(inside(&b, corner), expect, "{corner}");
+    }
+    // Edges: inside iff both faces' outward normals point away from d.
+    assert!(inside(&b, DVec3::new(0.5, 0.0, 0.0)));
+    assert!(!inside(&b, DVec3::new(0.5, 1.0, 0.0)));
+    assert!(d.y > 0.0 && d.z > 0.0);
+    // A sphere tangent to d at the point: the first order vanishes, the second says outside.
+    let s = Solid::sphere(1.0);
+    let tangent = DVec3::new(-d.y, d.x, 0.0).normalize();
+    assert!(!inside(&s, tangent));
+}
+
+#[test]
+fn pruned_programs_settle_zeros_as_the_full_program() {
+    // Random unions and differences of lattice boxes, every lattice point, pruned for every
+    // lattice cell around it.
+    let mut rng = Rng::new(7);
+    let mut zeros = 0;
+    for _ in 0..20 {
+        let mut s = unit_box_at(0.0, 0.0, 0.0);
+        for _ in 0..6 {
+            let p = [0, 1, 2].map(|_| (rng.next() * 3.0).floor() - 1.0);
+            let size = DVec3::new(1.0 + (rng.next() * 2.0).floor(), 1.0, 1.0);
+            let b = Solid::cuboid(size).translate(DVec3::new(p[0], p[1], p[2]) + size * 0.5);
+            s = if rng.next() < 0.6 {
+                s.union(&b)
+            } else {
+                s.difference(&b)
+            };
+        }
+        let full = s.compile();
+        let mut scratch = IntervalScratch::default();
+        let (mut a, mut b) = (Vec::new(), Vec::new());
+        for cell in 0..64 {
+            let lo = DVec3::new(
+                (cell & 3) as f64,
+                (cell >> 2 & 3) as f64,
+                (cell >> 4) as f64,
+            ) - DVec3::splat(1.5);
+            let bx = Aabb::new(lo, lo + DVec3::splat(0.5));
+            let Pruned::Surface(Some(pruned)) = full.prune_for_box(&bx, &mut scratch) else {
+                continue;
+            };
+            for corner in 0..8 {
+                let p = lo
+                    + DVec3::new(
+                        (corner & 1) as f64,
+                        (corner >> 1 & 1) as f64,
+                        (corner >> 2) as f64,
+                    ) * 0.5;
+                if full.value(p) == 0.0 {
+                    zeros += 1;
+                    assert_eq!(
+                        full.inside_at_zero(p, &mut a),
+                        pruned.inside_at_zero(p, &mut b),
+                        "{p}"
+                    );
+                }
+            }
+        }
+    }
+    assert!(zeros > 100, "{zeros}");
+}
