@@ -7,11 +7,21 @@ mod args;
 mod commands;
 mod frontends;
 mod input;
+mod output;
 mod progress;
 mod report;
 
 use clap::Parser;
+use std::io::Write;
 use std::process::ExitCode;
+
+/// `eprintln!` that ignores a failing standard error (it has nowhere else to go) instead of
+/// panicking.
+macro_rules! error_line {
+    ($($arg:tt)*) => {
+        let _ = writeln!(std::io::stderr(), $($arg)*);
+    };
+}
 
 fn main() -> ExitCode {
     let cli = match args::Cli::try_parse() {
@@ -22,18 +32,33 @@ fn main() -> ExitCode {
             return ExitCode::from(code);
         }
     };
+    // RAYON_NUM_THREADS is range-checked like --threads (rayon would start any number).
+    let from_env = || {
+        let v = std::env::var("RAYON_NUM_THREADS").ok()?;
+        let n = v.trim().parse::<usize>().ok()?;
+        (n > args::max_threads()).then_some(n)
+    };
+    if cli.threads.is_none()
+        && let Some(n) = from_env()
+    {
+        error_line!(
+            "error: RAYON_NUM_THREADS={n}: at most {} worker threads (16 per core)",
+            args::max_threads()
+        );
+        return ExitCode::from(2);
+    }
     if let Some(n) = cli.threads
         && let Err(e) = rayon::ThreadPoolBuilder::new()
             .num_threads(n)
             .build_global()
     {
-        eprintln!("error: --threads {n}: {e}");
+        error_line!("error: --threads {n}: {e}");
         return ExitCode::from(2);
     }
     match commands::run(cli.command) {
         Ok(code) => ExitCode::from(code),
         Err(e) => {
-            eprintln!("error: {}", one_line(&e));
+            error_line!("error: {}", one_line(&e));
             ExitCode::from(2)
         }
     }
