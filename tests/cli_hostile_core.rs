@@ -358,3 +358,78 @@ fn rhai_sleep_and_curry_end_with_exit_two_at_once() {
         assert_refused(&o, &["s.rhai:1:", phrase]);
     }
 }
+
+/// Starts `mesh` writing a large OBJ to `out` and waits until its temporary file exists; returns
+/// the child and the temporary file's path.
+#[cfg(unix)]
+fn killed_while_writing(tree: &Path, out: &Path) -> (std::process::Child, std::path::PathBuf) {
+    let child = Command::new(BIN)
+        .args([
+            "mesh",
+            path_str(tree),
+            "-r",
+            "500",
+            "--no-self-intersections",
+            "--json",
+        ])
+        .args(["--no-progress", "-o", path_str(out)])
+        .stdout(Stdio::null())
+        .stderr(Stdio::piped())
+        .spawn()
+        .unwrap();
+    let folder = out.parent().unwrap();
+    let start = Instant::now();
+    loop {
+        let temp = std::fs::read_dir(folder).unwrap().find_map(|e| {
+            let p = e.unwrap().path();
+            let name = p.file_name().unwrap().to_string_lossy().into_owned();
+            name.starts_with(".out.obj.").then_some(p)
+        });
+        if let Some(t) = temp {
+            return (child, t);
+        }
+        assert!(
+            start.elapsed() < Duration::from_secs(30),
+            "no temporary file"
+        );
+        std::thread::sleep(Duration::from_millis(1));
+    }
+}
+
+#[cfg(unix)]
+fn send(child: &std::process::Child, signal: &str) {
+    let ok = Command::new("kill")
+        .args([signal, &child.id().to_string()])
+        .status()
+        .unwrap();
+    assert!(ok.success());
+}
+
+#[cfg(unix)]
+#[test]
+fn temporary_files_are_removed_on_sigterm_and_after_sigkill() {
+    let dir = tempfile::tempdir().unwrap();
+    let tree = dir.path().join("sphere.json");
+    std::fs::write(&tree, r#"{"type": "sphere", "radius": 1}"#).unwrap();
+    let out = dir.path().join("out.obj");
+    for signal in ["-TERM", "-INT"] {
+        let (child, temp) = killed_while_writing(&tree, &out);
+        send(&child, signal);
+        let o = child.wait_with_output().unwrap();
+        assert_eq!(
+            o.status.code(),
+            Some(if signal == "-TERM" { 143 } else { 130 })
+        );
+        assert!(!temp.exists(), "{signal}: {} left behind", temp.display());
+        assert!(!out.exists(), "{signal}: a partial output");
+    }
+    // SIGKILL leaves it; the next write to the same target removes it.
+    let (mut child, temp) = killed_while_writing(&tree, &out);
+    send(&child, "-KILL");
+    child.wait().unwrap();
+    assert!(temp.exists());
+    let small = ["mesh", path_str(&tree), "-r", "8", "-o", path_str(&out)];
+    assert_eq!(solidkit(&small).status.code(), Some(0));
+    assert!(!temp.exists(), "the stale temporary file is left");
+    assert!(out.exists());
+}

@@ -24,6 +24,7 @@ macro_rules! error_line {
 }
 
 fn main() -> ExitCode {
+    clean_up_on_signals();
     let cli = match args::Cli::try_parse() {
         Ok(cli) => cli,
         Err(e) => {
@@ -60,6 +61,25 @@ fn main() -> ExitCode {
         Err(e) => {
             error_line!("error: {}", one_line(&e));
             ExitCode::from(2)
+        }
+    }
+}
+
+/// On SIGINT, SIGTERM or SIGHUP, removes the temporary output files being written and exits with
+/// 128 + the signal number, as the default action's status reads in a shell (destructors do not
+/// run when a signal ends the process, so they would stay behind).
+fn clean_up_on_signals() {
+    #[cfg(unix)]
+    {
+        use signal_hook::consts::{SIGHUP, SIGINT, SIGTERM};
+        if let Ok(mut signals) = signal_hook::iterator::Signals::new([SIGINT, SIGTERM, SIGHUP]) {
+            let _ = std::thread::Builder::new()
+                .name("signals".into())
+                .spawn(move || {
+                    if let Some(signal) = signals.forever().next() {
+                        solidkit_meshing::io::remove_temporary_files_and_exit(128 + signal);
+                    }
+                });
         }
     }
 }
