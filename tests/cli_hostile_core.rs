@@ -191,6 +191,10 @@ fn numbers_on_the_command_line_are_range_checked() {
             &["--resolution"],
         ),
         (
+            &["bench", "--repeat", "4294967295", "--in-process"],
+            &["--repeat"],
+        ),
+        (
             &["gen", "random", "-o", g, "--count", "100000000"],
             &["count"],
         ),

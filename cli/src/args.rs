@@ -216,8 +216,8 @@ pub struct BenchArgs {
     /// model's domain; default: each model's own list), 1 to 2048.
     #[arg(long, value_delimiter = ',', value_parser = parse_resolution)]
     pub resolution: Vec<usize>,
-    /// Runs per case; the table shows the median, minimum and maximum time.
-    #[arg(long, default_value_t = 5, value_parser = clap::value_parser!(u32).range(1..))]
+    /// Runs per case (1 to 1000); the table shows the median, minimum and maximum time.
+    #[arg(long, default_value_t = 5, value_parser = clap::value_parser!(u32).range(1..=1000))]
     pub repeat: u32,
     /// Measure the raw single-thread evaluation rates (points/s, boxes/s) instead of meshing.
     #[arg(long)]
@@ -243,7 +243,7 @@ pub struct BenchCaseArgs {
     #[arg(long, value_parser = parse_resolution)]
     pub resolution: usize,
     /// Runs.
-    #[arg(long, default_value_t = 5, value_parser = clap::value_parser!(u32).range(1..))]
+    #[arg(long, default_value_t = 5, value_parser = clap::value_parser!(u32).range(1..=1000))]
     pub repeat: u32,
     /// Polygonization method.
     #[arg(long, value_enum, default_value_t = Method::Mc)]
