@@ -144,6 +144,21 @@ fn blend_radii_outside_single_precision_mesh_closed() {
 }
 
 #[test]
+fn a_tree_with_a_tiny_blend_radius_meshes_closed() {
+    // Found by a structured fuzzer: a blend of radius 1e-46 inside a tree. NaN samples, and
+    // pruned programs of neighbouring bricks that dropped the NaN branch or not, disagreed on
+    // shared samples: DC indexed a patch a cell did not have (contour.rs:308, index out of
+    // bounds) and MC panicked in the octree assembly (assemble.rs:223).
+    let tree = solidkit_tests::fixture("hostile/tiny_blend_radius_dc12.json");
+    for method in ["dc", "mc"] {
+        for resolution in ["10", "12", "14"] {
+            let r = closed_manifold(&tree, method, resolution);
+            assert!(r["faces"].as_u64().unwrap() > 0, "{method} {resolution}: {r}");
+        }
+    }
+}
+
+#[test]
 fn numbers_on_the_command_line_are_range_checked() {
     let dir = tempfile::tempdir().unwrap();
     let d = dir.path();
