@@ -153,7 +153,10 @@ fn a_tree_with_a_tiny_blend_radius_meshes_closed() {
     for method in ["dc", "mc"] {
         for resolution in ["10", "12", "14"] {
             let r = closed_manifold(&tree, method, resolution);
-            assert!(r["faces"].as_u64().unwrap() > 0, "{method} {resolution}: {r}");
+            assert!(
+                r["faces"].as_u64().unwrap() > 0,
+                "{method} {resolution}: {r}"
+            );
         }
     }
 }

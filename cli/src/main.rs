@@ -12,16 +12,8 @@ mod progress;
 mod report;
 
 use clap::Parser;
-use std::io::Write;
+use output::errln;
 use std::process::ExitCode;
-
-/// `eprintln!` that ignores a failing standard error (it has nowhere else to go) instead of
-/// panicking.
-macro_rules! error_line {
-    ($($arg:tt)*) => {
-        let _ = writeln!(std::io::stderr(), $($arg)*);
-    };
-}
 
 fn main() -> ExitCode {
     clean_up_on_signals();
@@ -42,7 +34,7 @@ fn main() -> ExitCode {
     if cli.threads.is_none()
         && let Some(n) = from_env()
     {
-        error_line!(
+        errln!(
             "error: RAYON_NUM_THREADS={n}: at most {} worker threads (16 per core)",
             args::max_threads()
         );
@@ -53,13 +45,13 @@ fn main() -> ExitCode {
             .num_threads(n)
             .build_global()
     {
-        error_line!("error: --threads {n}: {e}");
+        errln!("error: --threads {n}: {e}");
         return ExitCode::from(2);
     }
     match commands::run(cli.command) {
         Ok(code) => ExitCode::from(code),
         Err(e) => {
-            error_line!("error: {}", one_line(&e));
+            errln!("error: {}", one_line(&e));
             ExitCode::from(2)
         }
     }

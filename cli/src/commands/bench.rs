@@ -61,7 +61,7 @@ pub fn run(a: &BenchArgs) -> Result<u8> {
         };
         for &n in resolutions {
             for &method in &a.method {
-                eprintln!(
+                crate::output::errln!(
                     "bench: {} at {n}^3 ({}), {threads} threads, {} runs",
                     model.name,
                     method.name(),

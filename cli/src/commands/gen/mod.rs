@@ -48,7 +48,7 @@ pub fn run(a: &GenArgs) -> Result<u8> {
     )?;
     let failures = selfcheck::failures(&manifest);
     for f in &failures {
-        eprintln!("check failed: {f}");
+        crate::output::errln!("check failed: {f}");
     }
     Ok(if failures.is_empty() { 0 } else { 1 })
 }
