@@ -7,8 +7,9 @@ use std::path::PathBuf;
 #[derive(Debug, Parser)]
 #[command(name = "solidkit", version, about)]
 pub struct Cli {
-    /// Worker threads (default: all cores; RAYON_NUM_THREADS is honoured).
-    #[arg(long, global = true)]
+    /// Worker threads (default: all cores; RAYON_NUM_THREADS is honoured), 1 to 16 per core
+    /// (at least 64).
+    #[arg(long, global = true, value_parser = parse_threads)]
     pub threads: Option<usize>,
     #[command(subcommand)]
     pub command: Command,
@@ -52,11 +53,13 @@ pub struct SubdivideArgs {
     /// The subdivision scheme.
     #[arg(long, value_enum)]
     pub scheme: SchemeArg,
-    /// How many times to apply it.
-    #[arg(long, default_value_t = 1)]
+    /// How many times to apply it (0 to 30).
+    #[arg(long, default_value_t = 1, value_parser = clap::value_parser!(u32).range(0..=30))]
     pub levels: u32,
-    /// Refuse (before any work) a request whose last level would have more faces than this.
-    #[arg(long, default_value_t = solidkit_meshing::subdivision::Limits::DEFAULT_MAX_FACES)]
+    /// Refuse (before any work) a request whose last level would have more faces than this
+    /// (also refused: more faces than half of this machine's memory holds, about 1 KiB each).
+    #[arg(long, default_value_t = solidkit_meshing::subdivision::Limits::DEFAULT_MAX_FACES,
+          value_parser = clap::value_parser!(u64).range(1..))]
     pub max_faces: u64,
     /// Print the report as JSON.
     #[arg(long)]
@@ -115,8 +118,8 @@ pub struct MeshArgs {
     /// Write the mesh here; the format follows the extension (.stl .obj .ply .off .3mf .glb).
     #[arg(short, long)]
     pub output: Option<PathBuf>,
-    /// Cells along the longest side of the meshing bounds.
-    #[arg(short, long, default_value_t = 128)]
+    /// Cells along the longest side of the meshing bounds (1 to 2048).
+    #[arg(short, long, default_value_t = 128, value_parser = parse_resolution)]
     pub resolution: usize,
     /// Polygonization method.
     #[arg(long, value_enum, default_value_t = Method::Mc)]
@@ -183,8 +186,9 @@ pub struct CompareArgs {
     pub a: PathBuf,
     /// The second mesh.
     pub b: PathBuf,
-    /// Area-weighted sample points per mesh (all vertices are sampled as well).
-    #[arg(long, default_value_t = 100_000)]
+    /// Area-weighted sample points per mesh (all vertices are sampled as well), at most
+    /// 10 000 000.
+    #[arg(long, default_value_t = 100_000, value_parser = parse_samples)]
     pub samples: usize,
     /// Print JSON: {"a": report, "b": report, "hausdorff": {...}}.
     #[arg(long)]
@@ -209,11 +213,11 @@ pub struct BenchArgs {
     #[arg(long, value_delimiter = ',')]
     pub model: Vec<String>,
     /// Resolutions, comma-separated, for every model (cells along the longest side of the
-    /// model's domain; default: each model's own list).
-    #[arg(long, value_delimiter = ',')]
+    /// model's domain; default: each model's own list), 1 to 2048.
+    #[arg(long, value_delimiter = ',', value_parser = parse_resolution)]
     pub resolution: Vec<usize>,
-    /// Runs per case; the table shows the median, minimum and maximum time.
-    #[arg(long, default_value_t = 5, value_parser = clap::value_parser!(u32).range(1..))]
+    /// Runs per case (1 to 1000); the table shows the median, minimum and maximum time.
+    #[arg(long, default_value_t = 5, value_parser = clap::value_parser!(u32).range(1..=1000))]
     pub repeat: u32,
     /// Measure the raw single-thread evaluation rates (points/s, boxes/s) instead of meshing.
     #[arg(long)]
@@ -236,10 +240,10 @@ pub struct BenchCaseArgs {
     #[arg(long)]
     pub model: String,
     /// Cells along the longest side of the model's domain.
-    #[arg(long)]
+    #[arg(long, value_parser = parse_resolution)]
     pub resolution: usize,
     /// Runs.
-    #[arg(long, default_value_t = 5, value_parser = clap::value_parser!(u32).range(1..))]
+    #[arg(long, default_value_t = 5, value_parser = clap::value_parser!(u32).range(1..=1000))]
     pub repeat: u32,
     /// Polygonization method.
     #[arg(long, value_enum, default_value_t = Method::Mc)]
@@ -273,5 +277,42 @@ fn parse_bounds(s: &str) -> Result<[f64; 6], String> {
     if (0..3).any(|i| out[i] >= out[i + 3]) {
         return Err("each minimum must be below its maximum".into());
     }
+    if (0..3).any(|i| !(out[i + 3] - out[i]).is_finite()) {
+        return Err("the box is too large (its size overflows)".into());
+    }
     Ok(out)
+}
+
+/// The largest grid resolution accepted: a sphere at 2048 already takes about 4 GB.
+pub const MAX_RESOLUTION: usize = 2048;
+
+/// The most area-weighted samples `compare` takes per mesh (each costs a distance query and
+/// about 50 bytes).
+pub const MAX_SAMPLES: usize = 10_000_000;
+
+/// An unsigned integer in `lo..=hi`, with a message naming the range.
+fn parse_in_range(s: &str, lo: usize, hi: usize, what: &str) -> Result<usize, String> {
+    match s.trim().parse::<usize>() {
+        Ok(n) if (lo..=hi).contains(&n) => Ok(n),
+        _ => Err(format!("'{s}' is not {what} from {lo} to {hi}")),
+    }
+}
+
+fn parse_resolution(s: &str) -> Result<usize, String> {
+    parse_in_range(s, 1, MAX_RESOLUTION, "a whole number of cells")
+}
+
+fn parse_samples(s: &str) -> Result<usize, String> {
+    parse_in_range(s, 0, MAX_SAMPLES, "a whole number of samples")
+}
+
+/// The most worker threads accepted: 16 per core, at least 64 (more only adds overhead; 100 000
+/// threads took over a minute to start).
+pub fn max_threads() -> usize {
+    let cores = std::thread::available_parallelism().map_or(1, |n| n.get());
+    (16 * cores).max(64)
+}
+
+fn parse_threads(s: &str) -> Result<usize, String> {
+    parse_in_range(s, 1, max_threads(), "a number of threads")
 }

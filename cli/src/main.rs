@@ -7,13 +7,16 @@ mod args;
 mod commands;
 mod frontends;
 mod input;
+mod output;
 mod progress;
 mod report;
 
 use clap::Parser;
+use output::errln;
 use std::process::ExitCode;
 
 fn main() -> ExitCode {
+    clean_up_on_signals();
     let cli = match args::Cli::try_parse() {
         Ok(cli) => cli,
         Err(e) => {
@@ -22,19 +25,53 @@ fn main() -> ExitCode {
             return ExitCode::from(code);
         }
     };
+    // RAYON_NUM_THREADS is range-checked like --threads (rayon would start any number).
+    let from_env = || {
+        let v = std::env::var("RAYON_NUM_THREADS").ok()?;
+        let n = v.trim().parse::<usize>().ok()?;
+        (n > args::max_threads()).then_some(n)
+    };
+    if cli.threads.is_none()
+        && let Some(n) = from_env()
+    {
+        errln!(
+            "error: RAYON_NUM_THREADS={n}: at most {} worker threads (16 per core)",
+            args::max_threads()
+        );
+        return ExitCode::from(2);
+    }
     if let Some(n) = cli.threads
         && let Err(e) = rayon::ThreadPoolBuilder::new()
             .num_threads(n)
             .build_global()
     {
-        eprintln!("error: --threads {n}: {e}");
+        errln!("error: --threads {n}: {e}");
         return ExitCode::from(2);
     }
     match commands::run(cli.command) {
         Ok(code) => ExitCode::from(code),
         Err(e) => {
-            eprintln!("error: {}", one_line(&e));
+            errln!("error: {}", one_line(&e));
             ExitCode::from(2)
+        }
+    }
+}
+
+/// On SIGINT, SIGTERM or SIGHUP, removes the temporary output files being written and exits with
+/// 128 + the signal number, as the default action's status reads in a shell (destructors do not
+/// run when a signal ends the process, so they would stay behind).
+fn clean_up_on_signals() {
+    #[cfg(unix)]
+    {
+        use signal_hook::consts::{SIGHUP, SIGINT, SIGTERM};
+        if let Ok(mut signals) = signal_hook::iterator::Signals::new([SIGINT, SIGTERM, SIGHUP]) {
+            let _ = std::thread::Builder::new()
+                .name("signals".into())
+                .spawn(move || {
+                    if let Some(signal) = signals.forever().next() {
+                        solidkit_meshing::io::remove_temporary_files_and_exit(128 + signal);
+                    }
+                });
         }
     }
 }

@@ -15,6 +15,7 @@ mod raw;
 mod table;
 
 use crate::args::{BenchArgs, BenchCaseArgs, Method};
+use crate::output::{out, outln};
 use anyhow::{Context, Result, bail};
 use case::CaseResult;
 use serde_json::json;
@@ -26,16 +27,16 @@ pub fn run(a: &BenchArgs) -> Result<u8> {
     if a.raw {
         let rows = raw::run(&raw::RawSizes::default(), a.repeat)?;
         if a.json {
-            println!("{}", serde_json::to_string_pretty(&json!({ "raw": rows }))?);
+            outln!("{}", serde_json::to_string_pretty(&json!({ "raw": rows }))?)?;
         } else {
-            print!("{}", raw::table(&rows).render());
+            out!("{}", raw::table(&rows).render())?;
             if let Some(r) = rows.iter().find(|r| r.model == "many-8456") {
                 let samples = 257f64.powi(3);
-                println!(
+                outln!(
                     "(the full many-8456 program at all 257^3 samples of a 256^3 grid: {:.0} s on \
                      one thread; compare `bench --model many-8456`)",
                     samples / r.rate_per_s
-                );
+                )?;
             }
         }
         return Ok(0);
@@ -60,7 +61,7 @@ pub fn run(a: &BenchArgs) -> Result<u8> {
         };
         for &n in resolutions {
             for &method in &a.method {
-                eprintln!(
+                crate::output::errln!(
                     "bench: {} at {n}^3 ({}), {threads} threads, {} runs",
                     model.name,
                     method.name(),
@@ -77,12 +78,12 @@ pub fn run(a: &BenchArgs) -> Result<u8> {
     }
     if a.json {
         let cases: Vec<_> = results.iter().map(CaseResult::to_json).collect();
-        println!(
+        outln!(
             "{}",
             serde_json::to_string_pretty(&json!({ "cases": cases }))?
-        );
+        )?;
     } else {
-        print!("{}", case::table(&results).render());
+        out!("{}", case::table(&results).render())?;
     }
     Ok(if results.iter().all(|r| r.check.passed()) {
         0
@@ -95,7 +96,7 @@ pub fn run(a: &BenchArgs) -> Result<u8> {
 pub fn run_case(a: &BenchCaseArgs) -> Result<u8> {
     let model = Model::by_name(&a.model)?;
     let r = case::run(&model, a.resolution, a.repeat, a.method, true)?;
-    println!("{}", serde_json::to_string(&r)?);
+    outln!("{}", serde_json::to_string(&r)?)?;
     Ok(0)
 }
 

@@ -2,6 +2,7 @@
 //! oriented manifold, no self-intersection).
 
 use crate::args::CheckArgs;
+use crate::output::{out, outln};
 use crate::report;
 use anyhow::Result;
 use solidkit_meshing::io::read_mesh;
@@ -16,9 +17,9 @@ pub fn run(a: &CheckArgs) -> Result<u8> {
     };
     let r = TopologyReport::with_options(&mesh, &options);
     if a.json {
-        println!("{}", report::to_json(&r, &[])?);
+        outln!("{}", report::to_json(&r, &[])?)?;
     } else {
-        print!("{}", r.to_text());
+        out!("{}", r.to_text())?;
     }
     Ok(if r.is_valid_solid() { 0 } else { 1 })
 }

@@ -2,6 +2,7 @@
 //! distance, absolute and relative to the bounding-box diagonal of the first.
 
 use crate::args::CompareArgs;
+use crate::output::{out, outln};
 use anyhow::{Context, Result};
 use glam::DVec3;
 use serde_json::{Value, json};
@@ -32,12 +33,12 @@ pub fn run(a: &CompareArgs) -> Result<u8> {
             "b": serde_json::to_value(&report_b)?,
             "hausdorff": hausdorff_json(&h, diagonal, relative, a.samples),
         });
-        println!("{}", serde_json::to_string_pretty(&v)?);
+        outln!("{}", serde_json::to_string_pretty(&v)?)?;
     } else {
-        print!(
+        out!(
             "{}",
             text(a, [&report_a, &report_b], &h, diagonal, relative)
-        );
+        )?;
     }
     Ok(0)
 }

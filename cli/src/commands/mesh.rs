@@ -1,6 +1,7 @@
 //! `solidkit mesh`: tree → field → marching cubes → report (and mesh file).
 
 use crate::args::{MeshArgs, Method};
+use crate::output::{out, outln};
 use crate::progress::MeshProgress;
 use crate::{input, report};
 use anyhow::{Result, anyhow};
@@ -68,10 +69,12 @@ pub fn run(a: &MeshArgs) -> Result<u8> {
     let report_start = Instant::now();
     let r = TopologyReport::with_options(&mesh, &options);
     let report_s = report_start.elapsed().as_secs_f64();
-    if let Some(out) = &a.output {
-        write_mesh(out, &mesh)?;
-    }
+    // The text report goes out before the file is written, so a closed or full standard output
+    // (exit 2) leaves an existing output file untouched; JSON only follows a written file.
     if a.json {
+        if let Some(out) = &a.output {
+            write_mesh(out, &mesh)?;
+        }
         let extra = [
             ("time_s", json!(time_s)),
             ("report_time_s", json!(report_s)),
@@ -82,18 +85,20 @@ pub fn run(a: &MeshArgs) -> Result<u8> {
             ("samples_evaluated", json!(stats.samples_evaluated)),
             ("program_length", json!(program.len())),
         ];
-        println!("{}", report::to_json(&r, &extra)?);
+        outln!("{}", report::to_json(&r, &extra)?)?;
     } else {
-        print!("{}", r.to_text());
+        out!("{}", r.to_text())?;
         let [x, y, z] = spec.cells;
-        println!(
+        outln!(
             "resolution: {} ({x} x {y} x {z} cells of {:.6})",
-            a.resolution, spec.cell
-        );
-        println!("time: {time_s:.3} s");
-        println!("report time: {report_s:.3} s");
+            a.resolution,
+            spec.cell
+        )?;
+        outln!("time: {time_s:.3} s")?;
+        outln!("report time: {report_s:.3} s")?;
         if let Some(out) = &a.output {
-            println!("wrote: {}", out.display());
+            write_mesh(out, &mesh)?;
+            outln!("wrote: {}", out.display())?;
         }
     }
     Ok(0)

@@ -62,7 +62,8 @@ crate::simd::wide_loop! {
     }
 }
 
-/// Mutable register `dst` and shared register `src` (distinct) of the register file.
+/// Mutable register `dst` and shared register `src` (distinct: callers handle an instruction
+/// whose operands are one register themselves) of the register file.
 fn pair(regs: &mut [f32], dst: usize, src: usize, n: usize) -> (&mut [f32], &[f32]) {
     if dst < src {
         let (lo, hi) = regs.split_at_mut(src * CHUNK);
@@ -144,9 +145,8 @@ impl Program {
                         }
                     }
                 }
-                Instr::Min(a, b) | Instr::Max(a, b) => {
+                Instr::Min(a, b) | Instr::Max(a, b) | Instr::SmoothMin(a, b, _) => {
                     let (ra, rb) = (reg(a), reg(b));
-                    let is_min = matches!(ins, Instr::Min(..));
                     // Bring one operand into `dst` (it may already be there), combine the other.
                     let other = if ra == dst {
                         rb
@@ -156,11 +156,29 @@ impl Program {
                         s.regs.copy_within(ra * CHUNK..ra * CHUNK + n, dst * CHUNK);
                         rb
                     };
+                    if other == dst {
+                        // Both operands are the value already in `dst` (an instruction over one
+                        // shared value, e.g. a blend of a subtree with itself): min(x, x) and
+                        // max(x, x) are x; the blend combines each lane with itself.
+                        if let Instr::SmoothMin(_, _, k) = *ins {
+                            let r = k.get() as f32;
+                            s.regs[dst * CHUNK..dst * CHUNK + n]
+                                .iter_mut()
+                                .for_each(|x| *x = super::smooth_min_f32(*x, *x, r));
+                        }
+                        continue;
+                    }
                     let (d, o) = pair(&mut s.regs, dst, other, n);
-                    if is_min {
-                        min_into(d, o)
-                    } else {
-                        max_into(d, o)
+                    match *ins {
+                        Instr::Min(..) => min_into(d, o),
+                        Instr::Max(..) => max_into(d, o),
+                        Instr::SmoothMin(_, _, k) => {
+                            let r = k.get() as f32;
+                            for (x, y) in d.iter_mut().zip(o) {
+                                *x = super::smooth_min_f32(*x, *y, r);
+                            }
+                        }
+                        _ => unreachable!("binary instructions only"),
                     }
                 }
                 Instr::Neg(a) => {
@@ -171,21 +189,6 @@ impl Program {
                     s.regs[dst * CHUNK..dst * CHUNK + n]
                         .iter_mut()
                         .for_each(|v| *v = -*v);
-                }
-                Instr::SmoothMin(a, b, k) => {
-                    let (ra, rb, r) = (reg(a), reg(b), k.get() as f32);
-                    let other = if ra == dst {
-                        rb
-                    } else if rb == dst {
-                        ra
-                    } else {
-                        s.regs.copy_within(ra * CHUNK..ra * CHUNK + n, dst * CHUNK);
-                        rb
-                    };
-                    let (d, o) = pair(&mut s.regs, dst, other, n);
-                    for (x, y) in d.iter_mut().zip(o) {
-                        *x = super::smooth_min_f32(*x, *y, r);
-                    }
                 }
                 Instr::Abs(a) | Instr::AddConst(a, _) => {
                     let ra = reg(a);

@@ -106,18 +106,14 @@ impl Lowerer {
         match kind {
             NodeKind::Primitive(p) => self.leaf(p, frame),
             NodeKind::SmoothUnion { radius } => {
-                let r = super::Bits::of(*radius * sigma);
-                self.fold(c, |a, b| Instr::SmoothMin(a, b, r), Infinity::Positive)
+                let r = blend_radius(*radius * sigma);
+                self.fold(c, |a, b| smooth_min(a, b, r), Infinity::Positive)
             }
             // smooth max(a, b) = −smooth min(−a, −b).
             NodeKind::SmoothIntersection { radius } => {
                 let negated: Vec<u32> = c.iter().map(|&x| self.emit(Instr::Neg(x))).collect();
-                let r = super::Bits::of(*radius * sigma);
-                let m = self.fold(
-                    &negated,
-                    |a, b| Instr::SmoothMin(a, b, r),
-                    Infinity::Positive,
-                );
+                let r = blend_radius(*radius * sigma);
+                let m = self.fold(&negated, |a, b| smooth_min(a, b, r), Infinity::Positive);
                 self.emit(Instr::Neg(m))
             }
             // a minus b = smooth max(a, −b) = −smooth min(−a, b).
@@ -125,11 +121,11 @@ impl Lowerer {
                 let Some((&first, rest)) = c.split_first() else {
                     return self.emit(Instr::Const(Infinity::Positive));
                 };
-                let r = super::Bits::of(*radius * sigma);
+                let r = blend_radius(*radius * sigma);
                 let start = self.emit(Instr::Neg(first));
                 let m = rest
                     .iter()
-                    .fold(start, |acc, &x| self.emit(Instr::SmoothMin(acc, x, r)));
+                    .fold(start, |acc, &x| self.emit(smooth_min(acc, x, r)));
                 self.emit(Instr::Neg(m))
             }
             NodeKind::Offset { distance } => {
@@ -266,6 +262,24 @@ impl Solid {
             std::sync::Arc::new(l.frames),
         )
         .with_result_last(result)
+    }
+}
+
+/// The blend radius every evaluator uses for a blend of radius `r` (world units), or `None` for a
+/// plain minimum. The f32 batch path divides by the radius rounded to single precision, so a
+/// radius below the smallest normal `f32` (about 1.2·10⁻³⁸; the blend is far below any sampling
+/// resolution there) is lowered as the exact minimum, and one above `f32::MAX` is clamped to it:
+/// the f32 and f64 evaluators then run the same instruction and agree.
+pub(crate) fn blend_radius(r: f64) -> Option<super::Bits> {
+    let r = r.min(f32::MAX as f64);
+    ((r as f32).is_normal() && r > 0.0).then(|| super::Bits::of(r))
+}
+
+/// The smooth minimum of `a` and `b` with radius `r`, or the plain minimum (see [`blend_radius`]).
+fn smooth_min(a: u32, b: u32, r: Option<super::Bits>) -> Instr {
+    match r {
+        Some(r) => Instr::SmoothMin(a, b, r),
+        None => Instr::Min(a, b),
     }
 }
 

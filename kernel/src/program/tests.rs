@@ -394,3 +394,142 @@ fn batch_gradients_agree_with_scalar_ones() {
         }
     }
 }
+
+/// Values of `p` at `pts` by every evaluator: f64 scalar, f32 batch, f64 gradient batch (values
+/// must match the scalar ones bit for bit, the f32 ones within single precision), and intervals
+/// over small boxes around each point containing the scalar values.
+fn assert_evaluators_agree(p: &super::Program, pts: &[DVec3], what: &str) {
+    let b = batch_values(p, pts);
+    let (mut v, mut g) = (vec![0.0; pts.len()], vec![DVec3::ZERO; pts.len()]);
+    p.values_gradients(pts, &mut v, &mut g, &mut super::GradientScratch::default());
+    let mut s = IntervalScratch::default();
+    for (k, q) in pts.iter().enumerate() {
+        let (sv, sg) = p.value_gradient_with(*q, &mut Vec::new());
+        assert!(
+            sv.is_finite() && sg.is_finite(),
+            "{what}: {sv}, {sg} at {q}"
+        );
+        assert_eq!(p.value(*q), sv, "{what}: value at {q}");
+        assert_eq!(v[k], sv, "{what}: batch gradient value at {q}");
+        assert!((g[k] - sg).length() < 1e-12, "{what}: gradient at {q}");
+        assert!(
+            (b[k] as f64 - sv).abs() < 1e-5 * (1.0 + sv.abs()),
+            "{what}: f32 {} vs f64 {sv} at {q}",
+            b[k]
+        );
+        let iv = p.interval_with(&Aabb::new(*q - 0.01, *q + 0.01), &mut s);
+        assert!(iv.lo <= sv && sv <= iv.hi, "{what}: {sv} outside {iv:?}");
+    }
+}
+
+#[test]
+fn binary_instructions_accept_one_value_as_both_operands() {
+    // Lowering simplifies min(x, x) away, but a blend of a subtree with itself, and pruned
+    // programs, can give a binary instruction one value twice; liveness then gives the result
+    // the operand's own register, so every evaluator must handle dst = a = b.
+    use super::{Bits, Program, lower::remap};
+    let base = Solid::sphere(0.8)
+        .translate(DVec3::new(0.1, 0.0, 0.0))
+        .lower();
+    assert_eq!(base.len(), 1);
+    let pts = grid_points(9, 1.2);
+    for op in [
+        Instr::Min(0, 0),
+        Instr::Max(0, 0),
+        Instr::SmoothMin(0, 0, Bits::of(0.3)),
+    ] {
+        // leaf, op(leaf, leaf), op of that with itself, its negation, op of that with itself.
+        let instrs = vec![
+            base.instrs[0],
+            op,
+            remap(op, |_| 1),
+            Instr::Neg(2),
+            remap(op, |_| 3),
+        ];
+        let p = Program::from_parts(instrs, base.primitives.clone(), base.frames.clone());
+        assert!(p.regs.windows(2).all(|w| w[0] == w[1]), "one register");
+        let f = |v: f64| match op {
+            Instr::SmoothMin(_, _, r) => super::smooth_min(v, v, r.get()),
+            _ => v,
+        };
+        for q in &pts {
+            assert_eq!(p.value(*q), f(-f(f(base.value(*q)))), "{op:?} at {q}");
+        }
+        assert_evaluators_agree(&p, &pts, &format!("{op:?}"));
+    }
+    // The same through the tree: blends of a solid with itself.
+    let s = Solid::sphere(0.7);
+    let pts = grid_points(7, 1.2);
+    for (name, t) in [
+        ("smooth_union", s.smooth_union(&s, 0.1)),
+        (
+            "smooth_intersection",
+            Solid::smooth_intersection_all([s.clone(), s.clone()], 0.1),
+        ),
+        (
+            "smooth_difference",
+            Solid::smooth_difference_all(s.clone(), [s.clone()], 0.1),
+        ),
+        ("union", s.union(&s)),
+        ("intersection", s.intersection(&s)),
+        ("difference", s.difference(&s)),
+    ] {
+        let p = t.lower();
+        assert_evaluators_agree(&p, &pts, name);
+        // Pruned programs of the same tree too.
+        let mut sc = IntervalScratch::default();
+        for q in &pts {
+            if let Pruned::Surface(Some(pp)) =
+                p.prune_for_box(&Aabb::new(*q - 0.05, *q + 0.05), &mut sc)
+            {
+                assert_evaluators_agree(&pp, &[*q], name);
+            }
+        }
+    }
+    let u = s.smooth_union(&s, 0.1).lower();
+    assert_eq!(u.value(DVec3::ZERO), -0.7 - 0.025);
+}
+
+#[test]
+fn blend_radii_below_and_above_single_precision_are_well_defined() {
+    // The f32 path divides by the radius rounded to f32: a radius that rounds to zero gave 0/0
+    // (NaN samples and broken meshes), one that overflows gave ∞/∞. Tiny radii are the exact
+    // minimum in every evaluator, huge ones are clamped to f32::MAX.
+    let a = Solid::sphere(0.5);
+    let b = Solid::sphere(0.4).translate(DVec3::new(0.5, 0.0, 0.0));
+    let pts = grid_points(9, 1.2);
+    for r in [1e-46, 1e-40, 5e-324, f64::MIN_POSITIVE] {
+        for (t, plain) in [
+            (a.smooth_union(&b, r), a.union(&b)),
+            (
+                Solid::smooth_intersection_all([a.clone(), b.clone()], r),
+                a.intersection(&b),
+            ),
+            (
+                Solid::smooth_difference_all(a.clone(), [b.clone()], r),
+                a.difference(&b),
+            ),
+            // Scaled down: the radius in world units is what counts.
+            (
+                a.smooth_union(&b, 1e-30).scale_uniform(1e-10),
+                a.union(&b).scale_uniform(1e-10),
+            ),
+        ] {
+            let (p, plain) = (t.lower(), plain.lower());
+            assert_evaluators_agree(&p, &pts, &format!("radius {r}"));
+            assert_eq!(batch_values(&p, &pts), batch_values(&plain, &pts));
+        }
+    }
+    for r in [1e39, 1e300] {
+        let p = a.smooth_union(&b, r).lower();
+        assert_evaluators_agree(&p, &pts, &format!("radius {r}"));
+        // The clamped blend: min − f32::MAX/4 where the operands are close.
+        let v = p.value(DVec3::new(0.25, 0.0, 0.0));
+        assert!(v < -0.2 * f32::MAX as f64, "{v}");
+    }
+    // A radius just above the smallest normal f32 keeps its blend.
+    let r = 2.0 * f32::MIN_POSITIVE as f64;
+    let p = a.smooth_union(&b, r).lower();
+    assert!(p.instrs().iter().any(|i| matches!(i, Instr::SmoothMin(..))));
+    assert_evaluators_agree(&p, &pts, "radius 2·f32::MIN_POSITIVE");
+}

@@ -4,14 +4,48 @@
 //! Readers of the target see either the old file or the complete new one, never a truncated or
 //! half-written file: on any error (or a panic inside the writer) the temporary file is removed
 //! and an existing target is left untouched.
+//!
+//! Destructors do not run when a signal ends the process, so the temporary files being written
+//! are also listed in a registry: a program's signal handler calls
+//! [`remove_temporary_files_and_exit`] (the `solidkit` binary does, for SIGINT, SIGTERM and
+//! SIGHUP). Files left by a process that died anyway (SIGKILL, power loss) are removed by the
+//! next write to the same target, once their writer's process is gone (Linux: `/proc`).
 
 use std::fs::{File, OpenOptions};
 use std::io::{self, BufWriter, Write};
 use std::path::{Path, PathBuf};
 use std::sync::atomic::{AtomicU64, Ordering};
+use std::sync::{Mutex, MutexGuard};
 use std::time::{SystemTime, UNIX_EPOCH};
 
 use super::MeshIoError;
+
+/// Temporary files this process is writing (created, not yet renamed or removed).
+static PENDING: Mutex<Vec<PathBuf>> = Mutex::new(Vec::new());
+
+fn pending() -> MutexGuard<'static, Vec<PathBuf>> {
+    // A panic while holding the lock leaves a list that is still valid.
+    PENDING.lock().unwrap_or_else(|e| e.into_inner())
+}
+
+fn unregister(path: &Path) {
+    let mut list = pending();
+    if let Some(i) = list.iter().position(|p| p == path) {
+        list.swap_remove(i);
+    }
+}
+
+/// Removes every temporary file this process is writing and exits with `code`, holding the
+/// registry's lock so no writer can start another one meanwhile. For a signal handler that runs
+/// as ordinary code (a thread woken by the signal, as `signal-hook`'s iterator does), since
+/// destructors do not run when a signal ends the process.
+pub fn remove_temporary_files_and_exit(code: i32) -> ! {
+    let list = pending();
+    for path in list.iter() {
+        let _ = std::fs::remove_file(path);
+    }
+    std::process::exit(code)
+}
 
 /// How many temporary names are tried before giving up (names collide only with leftovers or
 /// concurrent writers).
@@ -60,6 +94,7 @@ impl TempFile {
     /// The file was renamed into place: nothing to clean up.
     fn keep(mut self) {
         self.armed = false;
+        unregister(&self.path);
     }
 }
 
@@ -68,6 +103,7 @@ impl Drop for TempFile {
         if self.armed {
             // Best effort: the original error is what the caller needs to see.
             let _ = std::fs::remove_file(&self.path);
+            unregister(&self.path);
         }
     }
 }
@@ -81,12 +117,16 @@ fn create_temp_beside(target: &Path) -> io::Result<(File, TempFile)> {
         Some(parent) if !parent.as_os_str().is_empty() => parent,
         _ => Path::new("."),
     };
+    remove_stale_temporaries(folder, name);
     let mut last_error = None;
     for _ in 0..NAME_ATTEMPTS {
         let mut temp_name = std::ffi::OsString::from(".");
         temp_name.push(name);
         temp_name.push(format!(".{}.tmp", unique_suffix()));
         let temp_path = folder.join(temp_name);
+        // Listed before it exists, so a signal handler holding the list's lock either sees it
+        // or keeps it from being created.
+        pending().push(temp_path.clone());
         match OpenOptions::new()
             .write(true)
             .create_new(true)
@@ -99,11 +139,55 @@ fn create_temp_beside(target: &Path) -> io::Result<(File, TempFile)> {
                 };
                 return Ok((file, guard));
             }
-            Err(e) if e.kind() == io::ErrorKind::AlreadyExists => last_error = Some(e),
-            Err(e) => return Err(e),
+            Err(e) => {
+                unregister(&temp_path);
+                if e.kind() != io::ErrorKind::AlreadyExists {
+                    return Err(e);
+                }
+                last_error = Some(e);
+            }
         }
     }
     Err(last_error.unwrap_or_else(|| io::Error::other("no free temporary file name")))
+}
+
+/// Removes the temporary files of `name` in `folder` (`.NAME.PID-COUNT-NANOS.tmp`) whose writing
+/// process no longer runs: left by a process killed without a chance to clean up. Best effort,
+/// and only where running processes can be told (Linux's `/proc`); files of running processes,
+/// this one included, are left alone.
+fn remove_stale_temporaries(folder: &Path, name: &std::ffi::OsStr) {
+    let proc_root = Path::new("/proc");
+    if !proc_root.join("self").exists() {
+        return;
+    }
+    let Some(name) = name.to_str() else {
+        return;
+    };
+    let prefix = format!(".{name}.");
+    let Ok(entries) = std::fs::read_dir(folder) else {
+        return;
+    };
+    for entry in entries.flatten() {
+        let file_name = entry.file_name();
+        let Some(rest) = file_name
+            .to_str()
+            .and_then(|f| f.strip_prefix(&prefix))
+            .and_then(|f| f.strip_suffix(".tmp"))
+        else {
+            continue;
+        };
+        // PID-COUNT-NANOS, all digits (NANOS in hex): only our own names.
+        let parts: Vec<&str> = rest.split('-').collect();
+        let ours = parts.len() == 3
+            && parts[0].bytes().all(|b| b.is_ascii_digit())
+            && parts[1].bytes().all(|b| b.is_ascii_digit())
+            && parts[2].bytes().all(|b| b.is_ascii_hexdigit())
+            && parts.iter().all(|p| !p.is_empty());
+        let is_file = entry.file_type().is_ok_and(|t| t.is_file());
+        if ours && is_file && !proc_root.join(parts[0]).exists() {
+            let _ = std::fs::remove_file(entry.path());
+        }
+    }
 }
 
 /// A suffix that differs between processes, calls and (usually) runs.
@@ -209,6 +293,47 @@ mod tests {
         write_atomic(&target, |w| w.write_all(b"new")).expect("write");
         assert_eq!(std::fs::read(&target).expect("read"), b"new");
         assert_eq!(entries(dir.path()), ["r.off"]);
+    }
+
+    #[cfg(target_os = "linux")]
+    #[test]
+    fn stale_temporary_files_of_the_target_are_removed_by_the_next_write() {
+        let dir = tempfile::tempdir().expect("temp dir");
+        let target = dir.path().join("out.stl");
+        // A PID above Linux's maximum (2^22) never runs; our own PID does.
+        let stale = dir.path().join(".out.stl.4194305-0-1f.tmp");
+        let live = dir
+            .path()
+            .join(format!(".out.stl.{}-99-0.tmp", std::process::id()));
+        let other_target = dir.path().join(".other.stl.4194305-0-1f.tmp");
+        let not_ours = dir.path().join(".out.stl.notes.tmp");
+        for p in [&stale, &live, &other_target, &not_ours] {
+            std::fs::write(p, b"partial").expect("seed");
+        }
+        write_atomic(&target, |w| w.write_all(b"new")).expect("write");
+        assert_eq!(std::fs::read(&target).expect("read"), b"new");
+        assert!(!stale.exists(), "the stale file is left");
+        for p in [&live, &other_target, &not_ours] {
+            assert!(p.exists(), "{} was removed", p.display());
+        }
+        assert!(!pending().iter().any(|p| p.starts_with(dir.path())));
+    }
+
+    #[test]
+    fn temporary_files_are_listed_while_written() {
+        let dir = tempfile::tempdir().expect("temp dir");
+        let target = dir.path().join("listed.off");
+        write_atomic(&target, |w| {
+            let list = pending();
+            let mine: Vec<_> = list.iter().filter(|p| p.starts_with(dir.path())).collect();
+            assert_eq!(mine.len(), 1, "{list:?}");
+            assert!(mine[0].exists());
+            w.write_all(b"x")
+        })
+        .expect("write");
+        assert!(!pending().iter().any(|p| p.starts_with(dir.path())));
+        let _ = write_atomic(&target, |_| Err(io::Error::other("fail")));
+        assert!(!pending().iter().any(|p| p.starts_with(dir.path())));
     }
 
     #[test]

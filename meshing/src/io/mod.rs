@@ -45,7 +45,7 @@ use std::path::Path;
 
 use crate::IndexedMesh;
 
-pub use atomic::write_atomic;
+pub use atomic::{remove_temporary_files_and_exit, write_atomic};
 pub use error::{Location, MeshIoError};
 pub use polygon::{PolygonError, newell_normal, triangulate_polygon};
 pub use polygon_mesh::{

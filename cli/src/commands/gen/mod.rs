@@ -10,6 +10,7 @@ mod selfcheck;
 
 pub use args::GenArgs;
 
+use crate::output::{out, outln};
 use anyhow::{Context, Result};
 use rayon::prelude::*;
 use solidkit_meshing::io::write_atomic;
@@ -38,16 +39,16 @@ pub fn run(a: &GenArgs) -> Result<u8> {
     write_atomic(&manifest_path, |out| {
         out.write_all(manifest.to_json().as_bytes())
     })?;
-    print!("{}", selfcheck::summary(&manifest));
-    println!(
+    out!("{}", selfcheck::summary(&manifest))?;
+    outln!(
         "wrote: {} meshes and {} in {}",
         manifest.solids.len(),
         manifest_path.display(),
         dir.display()
-    );
+    )?;
     let failures = selfcheck::failures(&manifest);
     for f in &failures {
-        eprintln!("check failed: {f}");
+        crate::output::errln!("check failed: {f}");
     }
     Ok(if failures.is_empty() { 0 } else { 1 })
 }

@@ -16,6 +16,7 @@ struct Budget(u64);
 impl Budget {
     /// A node over `children`, or the budget error.
     fn node(self, children: &[Shape], build: impl FnOnce(Vec<Solid>) -> Solid) -> Fallible<Shape> {
+        super::check_deadline()?;
         let nodes = children.iter().fold(1u64, |n, c| n.saturating_add(c.nodes));
         if nodes > self.0 {
             return fail(format!(
@@ -53,7 +54,11 @@ pub(super) fn register(
     transforms(engine, Budget(max_nodes));
     blends(engine, Budget(max_nodes));
     engine.register_fn("node", move |m: Map| -> Fallible<Shape> {
-        node::from_map(m, resolver.as_ref(), max_nodes)
+        super::check_deadline()?;
+        let shape = node::from_map(m, resolver.as_ref(), max_nodes)?;
+        // Reading meshes or building large polyhedra may take long: stop right after.
+        super::check_deadline()?;
+        Ok(shape)
     });
     // `export` is a reserved word of Rhai, so `export(solid)` is a syntax of its own.
     engine
@@ -72,6 +77,7 @@ pub(super) fn register(
 }
 
 fn leaf(solid: Solid) -> Fallible<Shape> {
+    super::check_deadline()?;
     Ok(Shape::leaf(solid))
 }
 

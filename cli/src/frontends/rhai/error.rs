@@ -68,6 +68,10 @@ impl ScriptError {
 /// A syntax error, or a parse-time limit.
 pub(super) fn from_parse(source: &str, file: &str, e: &ParseError, limits: &Limits) -> ScriptError {
     let message = match e.err_type() {
+        // `curry` is disabled: the lexer refuses the call form, the parser the method form.
+        _ if word_at(source, e.position()) == Some("curry") => {
+            "'curry' is not available in solidkit scripts".to_string()
+        }
         ParseErrorType::ExprTooDeep => format!(
             "expressions nested too deeply (limit {})",
             limits.max_expr_depth
@@ -81,6 +85,17 @@ pub(super) fn from_parse(source: &str, file: &str, e: &ParseError, limits: &Limi
         other => format!("syntax error: {other}"),
     };
     ScriptError::at(source, file, e.position(), message)
+}
+
+/// The identifier starting at `pos` in `source`, if any.
+fn word_at(source: &str, pos: Position) -> Option<&str> {
+    let line = source.lines().nth(pos.line()?.checked_sub(1)?)?;
+    let start = line.char_indices().nth(pos.position()?.checked_sub(1)?)?.0;
+    let rest = &line[start..];
+    let end = rest
+        .find(|c: char| !(c.is_alphanumeric() || c == '_'))
+        .unwrap_or(rest.len());
+    (end > 0).then(|| &rest[..end])
 }
 
 /// A runtime error: the innermost cause, at its place.

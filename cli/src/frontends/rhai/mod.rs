@@ -19,6 +19,7 @@ use ::rhai::packages::{Package, StandardPackage};
 use ::rhai::{Dynamic, Engine, Scope};
 use solidkit_kernel::Solid;
 use solidkit_kernel::json::MeshResolver;
+use std::cell::Cell;
 use std::sync::{Arc, Mutex};
 use std::time::{Duration, Instant};
 
@@ -55,6 +56,24 @@ impl Default for Limits {
             max_map_size: 10_000,
             max_nodes: 1_000_000,
         }
+    }
+}
+
+thread_local! {
+    /// The wall-clock deadline of the script running on this thread, and its time limit.
+    static DEADLINE: Cell<Option<(Instant, Duration)>> = const { Cell::new(None) };
+}
+
+/// Fails once the deadline of the script running on this thread has passed. Every constructor of
+/// the API calls it: `on_progress` looks at the clock only every 1024 Rhai operations, and a script
+/// can spend its time in few operations inside solidkit's own functions.
+pub(super) fn check_deadline() -> shape::Fallible<()> {
+    match DEADLINE.get() {
+        Some((deadline, limit)) if Instant::now() > deadline => shape::fail(format!(
+            "the script ran longer than the {} s time limit",
+            limit.as_secs_f64()
+        )),
+        _ => Ok(()),
     }
 }
 
@@ -96,6 +115,7 @@ fn run(
     limits: Limits,
 ) -> Result<Solid, ScriptError> {
     let exported = Arc::new(Mutex::new(None::<Shape>));
+    DEADLINE.set(Some((Instant::now() + limits.max_time, limits.max_time)));
     let engine = engine(&limits, resolver, exported.clone());
     let ast = engine
         .compile(source)
@@ -116,7 +136,9 @@ fn run(
     }
 }
 
-/// The sandboxed engine: standard packages, our API, no `eval`, no modules, all limits set.
+/// The sandboxed engine: standard packages, our API, no `eval`, no modules, all limits set; no
+/// `sleep` (it ignored the deadline) and no `curry` (a curried function pointer holds deep copies of
+/// its arguments, outside Rhai's size limits: `f = f.curry(f)` doubles memory per step).
 fn engine(
     limits: &Limits,
     resolver: Arc<dyn MeshResolver + Send + Sync>,
@@ -125,6 +147,14 @@ fn engine(
     let mut engine = Engine::new_raw();
     engine.register_global_module(StandardPackage::new().as_shared_module());
     engine.disable_symbol("eval");
+    engine.disable_symbol("curry");
+    // Functions registered on the engine are found before the standard package's.
+    engine.register_fn("sleep", |_: rhai::INT| -> shape::Fallible<()> {
+        no_sleep()
+    });
+    engine.register_fn("sleep", |_: rhai::FLOAT| -> shape::Fallible<()> {
+        no_sleep()
+    });
     engine.set_max_operations(limits.max_operations);
     engine.set_max_call_levels(limits.max_call_levels);
     engine.set_max_expr_depths(limits.max_expr_depth, limits.max_expr_depth);
@@ -136,8 +166,12 @@ fn engine(
     engine.on_progress(move |ops| {
         (ops % 1024 == 0 && start.elapsed() > max_time).then(|| Dynamic::from(error::TIMEOUT))
     });
-    engine.on_print(|s| eprintln!("{s}"));
-    engine.on_debug(|s, _, pos| eprintln!("{pos:?}: {s}"));
+    engine.on_print(|s| crate::output::errln!("{s}"));
+    engine.on_debug(|s, _, pos| crate::output::errln!("{pos:?}: {s}"));
     api::register(&mut engine, limits.max_nodes, resolver, exported);
     engine
+}
+
+fn no_sleep() -> shape::Fallible<()> {
+    shape::fail("'sleep' is not available in solidkit scripts")
 }

@@ -242,9 +242,11 @@ fn hostile_scripts_stop_with_clear_errors() {
         "let s = sphere(1); for i in 0..60 { s = s | s; } s",
         "more than the limit of 1000000",
     );
+    // `node` writes and reads the tree as JSON, which takes long for a large one: the deadline,
+    // checked by every constructor, may come first on a loaded machine.
     hostile(
         "let s = sphere(1); for i in 0..60 { s = node(#{type: \"union\", children: [s, s]}); } s",
-        "more than the limit of 1000000",
+        "more than the limit of 1000000 | s time limit",
     );
     let deep = format!("{}1{}", "(".repeat(200), ")".repeat(200));
     hostile(&format!("sphere({deep})"), "nested too deeply");
@@ -279,4 +281,51 @@ fn errors_name_line_column_and_source() {
     assert!(e.to_string().contains("made no solid"), "{e}");
     let e = run(r#"node(#{type: "ellipsoid", radii: [1, 2]})"#).expect_err("bad node");
     assert!(e.to_string().contains("radii"), "{e}");
+}
+
+#[test]
+fn sleep_and_curry_are_not_available() {
+    // `sleep` ignored the deadline (and panicked on huge floats); it is an error at once.
+    for script in [
+        "sleep(1000000000); sphere(1)",
+        "sleep(1e300); sphere(1)",
+        "sleep(0.5); sphere(1)",
+        r#"let f = Fn("sleep"); f.call(1000000000); sphere(1)"#,
+    ] {
+        let e = hostile(script, "'sleep' is not available");
+        assert_eq!(e.line, Some(1), "{e}");
+    }
+    // Curried function pointers hold deep copies outside Rhai's size limits: doubling one 26
+    // times took 8 GB. `curry` is refused when the script is read, in both spellings.
+    for script in [
+        r#"let f = Fn("sphere"); for i in 0..26 { f = f.curry(f); } sphere(1)"#,
+        r#"let f = Fn("sphere"); f = curry(f, 1); sphere(1)"#,
+    ] {
+        let e = hostile(script, "'curry' is not available");
+        assert_eq!(e.line, Some(1), "{e}");
+    }
+    // Closures (which capture by sharing, not by copying) still work.
+    assert_eq!(
+        solid("let r = 2; let f = |x| sphere(x * r); f.call(1)"),
+        solid("sphere(2)")
+    );
+}
+
+#[test]
+fn constructors_check_the_deadline() {
+    // On a deadline already past, the first constructor stops the script, before Rhai's own
+    // check (every 1024 operations) could.
+    let limits = super::Limits {
+        max_time: Duration::ZERO,
+        ..super::Limits::default()
+    };
+    for script in [
+        "sphere(1)",
+        "cube(1) | sphere(1)",
+        r#"node(#{type: "sphere", radius: 1})"#,
+    ] {
+        let e =
+            super::eval_with(script, "t.rhai", Arc::new(NoMeshResolver), limits).expect_err(script);
+        assert!(e.to_string().contains("0 s time limit"), "{script}: {e}");
+    }
 }
