@@ -136,8 +136,8 @@ fn engine(
     engine.on_progress(move |ops| {
         (ops % 1024 == 0 && start.elapsed() > max_time).then(|| Dynamic::from(error::TIMEOUT))
     });
-    engine.on_print(|s| eprintln!("{s}"));
-    engine.on_debug(|s, _, pos| eprintln!("{pos:?}: {s}"));
+    engine.on_print(|s| eprintln!("{}", crate::escape::one_line(s)));
+    engine.on_debug(|s, _, pos| eprintln!("{pos:?}: {}", crate::escape::one_line(s)));
     api::register(&mut engine, limits.max_nodes, resolver, exported);
     engine
 }
