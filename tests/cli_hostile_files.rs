@@ -47,7 +47,10 @@ fn fails(args: &[&str], phrases: &[&str]) -> String {
     assert_eq!(o.status.code(), Some(2), "{args:?}: {err}");
     assert_eq!(err.lines().count(), 1, "{args:?}: {err}");
     for phrase in phrases {
-        assert!(err.contains(phrase), "{args:?}: missing '{phrase}' in {err}");
+        assert!(
+            err.contains(phrase),
+            "{args:?}: missing '{phrase}' in {err}"
+        );
     }
     for leaked in ["root:x", "/bin/bash", "secret-token"] {
         assert!(!err.contains(leaked), "{args:?}: leaked '{leaked}': {err}");
@@ -161,7 +164,12 @@ fn files_inside_the_tree_folder_are_read() {
         .current_dir(l.path("tree"))
         .output()
         .unwrap();
-    assert_eq!(o.status.code(), Some(0), "{}", String::from_utf8_lossy(&o.stderr));
+    assert_eq!(
+        o.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&o.stderr)
+    );
 }
 
 #[test]
@@ -170,19 +178,44 @@ fn absolute_paths_and_dot_dot_are_refused_without_allow_path() {
     let abs_mesh = l.path("outside/tet.obj");
     let abs_png = l.path("outside/map.png");
     let cases = [
-        (l.mesh_tree("a.json", path_str(&abs_mesh)), "absolute paths are not allowed"),
-        (l.mesh_tree("b.json", "../outside/tet.obj"), "outside the folder of the tree"),
-        (l.mesh_tree("c.json", "../nothing/here.obj"), "outside the folder of the tree"),
-        (l.png_tree("d.json", path_str(&abs_png)), "absolute paths are not allowed"),
-        (l.png_tree("e.json", "../outside/map.png"), "outside the folder of the tree"),
-        (l.mesh_tree("f.json", "/etc/passwd.off"), "absolute paths are not allowed"),
+        (
+            l.mesh_tree("a.json", path_str(&abs_mesh)),
+            "absolute paths are not allowed",
+        ),
+        (
+            l.mesh_tree("b.json", "../outside/tet.obj"),
+            "outside the folder of the tree",
+        ),
+        (
+            l.mesh_tree("c.json", "../nothing/here.obj"),
+            "outside the folder of the tree",
+        ),
+        (
+            l.png_tree("d.json", path_str(&abs_png)),
+            "absolute paths are not allowed",
+        ),
+        (
+            l.png_tree("e.json", "../outside/map.png"),
+            "outside the folder of the tree",
+        ),
+        (
+            l.mesh_tree("f.json", "/etc/passwd.off"),
+            "absolute paths are not allowed",
+        ),
     ];
     for (tree, phrase) in &cases {
         let line = fails(&mesh_args(tree), &[phrase, "--allow-path"]);
         // Located at the node's key.
         let name = tree.file_name().unwrap().to_str().unwrap();
-        let key = if line.contains("map.png") { "png: " } else { "path: " };
-        assert!(line.contains(&format!("{name}:")) && line.contains(key), "{line}");
+        let key = if line.contains("map.png") {
+            "png: "
+        } else {
+            "path: "
+        };
+        assert!(
+            line.contains(&format!("{name}:")) && line.contains(key),
+            "{line}"
+        );
     }
     // `convert` reads trees the same way.
     let out = l.path("out.json");
@@ -192,7 +225,10 @@ fn absolute_paths_and_dot_dot_are_refused_without_allow_path() {
     );
     assert!(!out.exists());
     // Rhai scripts too.
-    let script = l.tree("s.rhai", r#"node(#{type: "mesh", path: "../outside/tet.obj"})"#);
+    let script = l.tree(
+        "s.rhai",
+        r#"node(#{type: "mesh", path: "../outside/tet.obj"})"#,
+    );
     fails(&mesh_args(&script), &["outside the folder of the tree"]);
     // With the folder allowed, every one of them is read (the missing file is then just missing).
     let allow = path_str(&l.root).to_owned();
@@ -227,7 +263,10 @@ fn symbolic_links_out_of_the_folder_are_refused() {
         l.mesh_tree("e.json", "out/../top.obj"),
     ];
     for tree in &cases {
-        fails(&mesh_args(tree), &["outside the folder of the tree", "symbolic link"]);
+        fails(
+            &mesh_args(tree),
+            &["outside the folder of the tree", "symbolic link"],
+        );
     }
     // Allowing the target folder (not the tree's parent) is enough.
     let allow = l.path("outside");
@@ -247,7 +286,11 @@ fn only_regular_files_are_read() {
     assert!(made.success());
     fails(&["check", path_str(&fifo)], &["not a regular file", "FIFO"]);
     fails(
-        &["compare", path_str(&fifo), path_str(&l.path("tree/tet.obj"))],
+        &[
+            "compare",
+            path_str(&fifo),
+            path_str(&l.path("tree/tet.obj")),
+        ],
         &["not a regular file"],
     );
     std::fs::create_dir(l.path("tree/dir.stl")).unwrap();
@@ -257,7 +300,13 @@ fn only_regular_files_are_read() {
     );
     // The tree itself.
     let fifo_tree = l.path("tree/fifo.json");
-    assert!(Command::new("mkfifo").arg(&fifo_tree).status().unwrap().success());
+    assert!(
+        Command::new("mkfifo")
+            .arg(&fifo_tree)
+            .status()
+            .unwrap()
+            .success()
+    );
     fails(&mesh_args(&fifo_tree), &["not a regular file"]);
     // Files named by the tree: a FIFO, /dev/zero through a link, /dev/urandom as a PNG.
     std::os::unix::fs::symlink("/dev/zero", l.path("tree/zero.stl")).unwrap();
@@ -288,9 +337,16 @@ fn files_over_the_size_cap_are_refused_before_reading() {
     drop(f);
     fails(
         &["check", path_str(&big)],
-        &["file too large", "1073741825 bytes", "limit is 1073741824 bytes"],
+        &[
+            "file too large",
+            "1073741825 bytes",
+            "limit is 1073741824 bytes",
+        ],
     );
-    fails(&mesh_args(&l.mesh_tree("a.json", "big.stl")), &["file too large"]);
+    fails(
+        &mesh_args(&l.mesh_tree("a.json", "big.stl")),
+        &["file too large"],
+    );
     let f = std::fs::File::create(l.path("tree/big.json")).unwrap();
     f.set_len((1 << 30) + 1).unwrap();
     fails(&mesh_args(&l.path("tree/big.json")), &["file too large"]);
@@ -329,7 +385,10 @@ fn png_dimensions_are_limited_before_decoding() {
         ("b.json", "wide.png", "100000 × 2"),
     ] {
         let line = fails(&mesh_args(&l.png_tree(name, png)), &["too large", size]);
-        assert!(line.contains(&format!("{name}:2:")) && line.contains("png:"), "{line}");
+        assert!(
+            line.contains(&format!("{name}:2:")) && line.contains("png:"),
+            "{line}"
+        );
     }
 }
 
@@ -381,11 +440,23 @@ fn json_duplicate_keys_and_raw_control_characters_are_located_errors() {
         "dup.json",
         "{\"type\": \"sphere\",\n \"radius\": 1, \"radius\": 2}",
     );
-    fails(&mesh_args(&dup), &["dup.json:2:15:", "duplicate key \"radius\""]);
+    fails(
+        &mesh_args(&dup),
+        &["dup.json:2:15:", "duplicate key \"radius\""],
+    );
     let raw = l.tree("raw.json", "{\"type\": \"sph\u{1b}ere\", \"radius\": 1}");
-    fails(&mesh_args(&raw), &["raw.json:1:14:", "control character in string"]);
-    let nul = l.tree("nul.json", "{\"comment\": \"a\0b\", \"type\": \"sphere\", \"radius\": 1}");
-    fails(&mesh_args(&nul), &["nul.json:1:15:", "control character in string"]);
+    fails(
+        &mesh_args(&raw),
+        &["raw.json:1:14:", "control character in string"],
+    );
+    let nul = l.tree(
+        "nul.json",
+        "{\"comment\": \"a\0b\", \"type\": \"sphere\", \"radius\": 1}",
+    );
+    fails(
+        &mesh_args(&nul),
+        &["nul.json:1:15:", "control character in string"],
+    );
 }
 
 #[test]

@@ -11,7 +11,9 @@ pub fn one_line(text: &str) -> String {
         match c {
             '\n' => out.push(' '),
             '\0' => out.push_str("\\0"),
-            c if c.is_control() || matches!(c, '\u{202a}'..='\u{202e}' | '\u{2066}'..='\u{2069}') => {
+            c if c.is_control()
+                || matches!(c, '\u{202a}'..='\u{202e}' | '\u{2066}'..='\u{2069}') =>
+            {
                 out.extend(c.escape_default())
             }
             c => out.push(c),

@@ -383,20 +383,43 @@ mod tests {
     fn only_regular_files_within_the_cap_are_read() {
         let dir = temp_dir("regular");
         let e = read_regular_file(&dir, 100).unwrap_err();
-        assert!(matches!(e, FileError::NotRegular { kind: "a directory", .. }), "{e}");
+        assert!(
+            matches!(
+                e,
+                FileError::NotRegular {
+                    kind: "a directory",
+                    ..
+                }
+            ),
+            "{e}"
+        );
         let e = read_regular_file(Path::new("/dev/zero"), 100).unwrap_err();
         assert!(matches!(e, FileError::NotRegular { .. }), "{e}");
         std::os::unix::fs::symlink("/dev/zero", dir.join("tree/zero.stl")).unwrap();
-        let access = FileAccess::new(dir.join("tree")).allow(Path::new("/dev")).unwrap();
+        let access = FileAccess::new(dir.join("tree"))
+            .allow(Path::new("/dev"))
+            .unwrap();
         let e = access.read("zero.stl").unwrap_err();
         assert!(e.to_string().contains("not a regular file"), "{e}");
         let e = read_regular_file(&dir.join("tree/b.obj"), 4).unwrap_err();
         assert!(
-            matches!(e, FileError::TooLarge { size: 10, limit: 4, .. }),
+            matches!(
+                e,
+                FileError::TooLarge {
+                    size: 10,
+                    limit: 4,
+                    ..
+                }
+            ),
             "{e}"
         );
         assert!(e.to_string().contains("limit is 4 bytes"), "{e}");
-        assert_eq!(read_regular_file(&dir.join("tree/b.obj"), 10).unwrap().len(), 10);
+        assert_eq!(
+            read_regular_file(&dir.join("tree/b.obj"), 10)
+                .unwrap()
+                .len(),
+            10
+        );
         std::fs::remove_dir_all(&dir).unwrap();
     }
 }

@@ -463,7 +463,10 @@ mod tests {
         assert!(parse(&(text.clone() + "\"z\": 0}")).is_ok());
         let at = text.len();
         let e = parse(&(text + "\"k500\": 0}")).unwrap_err();
-        assert_eq!((e.offset, e.message.as_str()), (at, "duplicate key \"k500\" in object"));
+        assert_eq!(
+            (e.offset, e.message.as_str()),
+            (at, "duplicate key \"k500\" in object")
+        );
         for raw in ["\u{1b}", "\r", "\0", "\n", "\t"] {
             let e = parse(&format!("{{\"a\": \"x{raw}y\"}}")).unwrap_err();
             assert_eq!(e.offset, 8, "{raw:?}: {}", e.message);

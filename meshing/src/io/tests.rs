@@ -791,8 +791,12 @@ fn foreign_content_is_never_quoted() {
         );
     }
     // A text file that happens to start with `solid` is not quoted either.
-    let e = read_mesh_bytes(b"solid state\nsecret words here\n", MeshFormat::Stl, "x.stl")
-        .expect_err("not an STL");
+    let e = read_mesh_bytes(
+        b"solid state\nsecret words here\n",
+        MeshFormat::Stl,
+        "x.stl",
+    )
+    .expect_err("not an STL");
     assert!(!e.to_string().contains("secret"), "{e}");
     // Inside a recognised file tokens are quoted, with control characters escaped.
     let stl = b"solid t\nfacet normal 0 0 1\nouter loop\nvertex 0 0 \x1b[31m\n";

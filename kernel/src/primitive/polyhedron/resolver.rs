@@ -20,9 +20,11 @@ pub trait MeshResolver {
     /// reason why not. The default reads no files and says so.
     fn read_file(&self, path: &str) -> Result<Vec<u8>, String> {
         let _ = path;
-        Err("files named in a tree need a resolver (read the tree with json::from_str_with and \
+        Err(
+            "files named in a tree need a resolver (read the tree with json::from_str_with and \
              solidkit_meshing::io::FileMeshResolver)"
-            .into())
+                .into(),
+        )
     }
 
     /// The polygon mesh of `request` subdivided, as triangles counter-clockwise from outside, or
