@@ -100,7 +100,7 @@ pub fn self_intersections(
 /// The groups of repeated triangles, by their representative (lowest index).
 #[derive(Debug, Default)]
 struct Copies {
-    /// Representative → (number of copies, the `limit` lowest indices, ascending).
+    /// Representative → (number of copies, the `limit + 1` lowest indices, ascending).
     groups: HashMap<u32, (usize, Vec<u32>)>,
 }
 
@@ -128,7 +128,8 @@ impl Copies {
             for &(_, slot) in &members[1..] {
                 tris[slot] = None;
             }
-            let first = members.iter().take(limit.max(1)).map(|&(i, _)| i).collect();
+            // `limit + 1`: the smallest pairs among copies are the first with the next `limit`.
+            let first = members.iter().take(limit + 1).map(|&(i, _)| i).collect();
             groups.insert(members[0].0, (members.len(), first));
         }
         Self { groups }
