@@ -431,6 +431,13 @@ fn control_characters_in_messages_are_escaped() {
     let name = l.path("tree/\u{1b}]0;title\u{7}.stl");
     std::fs::write(&name, "not an stl").unwrap();
     fails(&["check", path_str(&name)], &["\\u{1b}]0;title\\u{7}.stl"]);
+    // A script's own output to standard error.
+    let script = l.tree("p.rhai", "print(\"a\\x1b[2Jb\\rc\"); sphere(1)");
+    let o = solidkit(&mesh_args(&script));
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert_eq!(o.status.code(), Some(0), "{err}");
+    assert!(err.contains("a\\u{1b}[2Jb\\rc"), "{err:?}");
+    assert!(!err.contains('\u{1b}') && !err.contains('\r'), "{err:?}");
 }
 
 #[test]
