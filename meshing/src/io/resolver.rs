@@ -4,10 +4,12 @@
 //! stay inside that folder (or a folder the user allowed) once `..` and symbolic links are
 //! resolved, absolute paths are refused, and only regular files within the size cap are read.
 //! Mesh files are parsed by [`read_mesh_bytes`](super::read_mesh_bytes) in the format of the
-//! extension written in the tree; errors name the file as the tree writes it. It also carries out the `subdivide` nodes the kernel
-//! records: the child's polygon mesh (inline faces, or a file read with its polygons by
-//! [`read_polygon_mesh`](super::read_polygon_mesh)) becomes a [`HalfEdgeMesh`], is subdivided by
-//! [`crate::subdivision`] within the default [`Limits`], and goes back triangulated
+//! extension written in the tree; errors name the file as the tree writes it.
+//!
+//! It also carries out the `subdivide` nodes the kernel records: the child's polygon mesh (inline
+//! faces, or a file read the same way with its polygons by
+//! [`read_polygon_mesh_bytes`](super::read_polygon_mesh_bytes)) becomes a [`HalfEdgeMesh`], is
+//! subdivided by [`crate::subdivision`] within the default [`Limits`], and goes back triangulated
 //! ([`PolygonMesh::triangulated`]).
 
 use std::path::{Path, PathBuf};
