@@ -361,3 +361,26 @@ fn huge_declared_images_are_refused_before_allocating() {
         assert!(start.elapsed().as_secs_f64() < 0.5);
     }
 }
+
+#[test]
+fn the_largest_allowed_image_decodes() {
+    let side = 4096u32;
+    let data = vec![7u8; (side * side * 2) as usize];
+    let png = encode(
+        side,
+        side,
+        ::png::BitDepth::Sixteen,
+        ::png::ColorType::Grayscale,
+        &data,
+    );
+    let g = decode_png(&png).unwrap();
+    assert_eq!((g.nx(), g.ny()), (4096, 4096));
+    let wide = encode(
+        MAX_PNG_SIDE,
+        2,
+        ::png::BitDepth::Eight,
+        ::png::ColorType::Grayscale,
+        &vec![0; 2 * MAX_PNG_SIDE as usize],
+    );
+    assert!(decode_png(&wide).is_ok());
+}
