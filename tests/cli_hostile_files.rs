@@ -3,7 +3,8 @@
 //! paths, `..`, symbolic links), only regular files within the size cap are read (FIFOs, devices,
 //! directories fail fast), PNG height maps have dimension limits, errors never quote a foreign
 //! file's content nor print control characters, and JSON duplicate keys and raw control
-//! characters are located errors. Every failure is exit 2 with one line on stderr, within 2 s.
+//! characters are located errors. Every failure is exit 2 with one line on stderr, within 2 s;
+//! 40 000 coincident triangles are checked and meshed within the same budget.
 
 use solidkit_tests::{fixture, path_str};
 use std::path::{Path, PathBuf};
@@ -476,4 +477,30 @@ fn csg_import_and_surface_read_no_files() {
         let csg = l.tree(name, text);
         fails(&mesh_args(&csg), &[name]);
     }
+}
+
+/// 40 000 coincident triangles (a 2 MB binary STL): `check` counts all C(40000, 2) intersecting
+/// pairs and a `mesh` node on the file meshes, each within the 2 s budget.
+#[test]
+fn coincident_triangles_stay_fast() {
+    let l = Layout::new();
+    let mut stl = vec![0u8; 80];
+    stl.extend(40_000u32.to_le_bytes());
+    let floats: [f32; 12] = [0., 0., 1., 0., 0., 0., 1., 0., 0., 0., 1., 0.];
+    for _ in 0..40_000 {
+        stl.extend(floats.iter().flat_map(|f| f.to_le_bytes()));
+        stl.extend([0, 0]);
+    }
+    let file = l.path("tree/coincident.stl");
+    std::fs::write(&file, &stl).unwrap();
+    let o = solidkit(&["check", path_str(&file), "--json"]);
+    assert_eq!(o.status.code(), Some(1));
+    let report: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
+    assert_eq!(report["self_intersections"], 40_000u64 * 39_999 / 2);
+    let tree = l.tree(
+        "c.json",
+        r#"{"type": "union", "children": [{"type": "mesh", "path": "coincident.stl"},
+            {"type": "sphere", "radius": 0.2}]}"#,
+    );
+    succeeds(&["mesh", path_str(&tree), "--resolution", "128"]);
 }
