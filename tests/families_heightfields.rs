@@ -10,6 +10,7 @@ use solidkit_kernel::primitive::heightfield::{
 use solidkit_kernel::tessellate::{self, Tessellation};
 use solidkit_kernel::{IndexedMesh, Primitive, Solid, json};
 use solidkit_meshing::TopologyReport;
+use solidkit_meshing::io::FileMeshResolver;
 use solidkit_tests::{fixture, mesh, rel_err};
 use std::f64::consts::PI;
 use std::sync::Arc;
@@ -65,12 +66,11 @@ fn bezier_height_field_solid() {
 #[test]
 fn png_height_map_solid() {
     let path = fixture("heightfields/bump16.png");
-    let text = format!(
-        r#"{{"type": "heightfield", "min": [0, 0], "max": [2, 2], "base": 0,
-            "png": {:?}, "heights": [0.1, 0.9]}}"#,
-        path.to_str().unwrap()
-    );
-    let solid = json::from_str(&text).unwrap();
+    // The path is relative to the tree's folder, as a tree file beside the PNG writes it.
+    let resolver = FileMeshResolver::new(fixture("heightfields"));
+    let text = r#"{"type": "heightfield", "min": [0, 0], "max": [2, 2], "base": 0,
+            "png": "bump16.png", "heights": [0.1, 0.9]}"#;
+    let solid = json::from_str_with(text, &resolver).unwrap();
     // Exact volume of the bilinear interpolant: trapezoid weights on the decoded samples.
     let g = load_png(&path).unwrap();
     let (nx, ny) = (g.nx(), g.ny());
@@ -96,7 +96,10 @@ fn png_height_map_solid() {
         r.volume
     );
     // The PNG node writes its path back and reads to the same solid.
-    assert_eq!(json::from_str(&json::to_string(&solid)).unwrap(), solid);
+    assert_eq!(
+        json::from_str_with(&json::to_string(&solid), &resolver).unwrap(),
+        solid
+    );
 }
 
 #[test]

@@ -146,6 +146,11 @@ pub struct MeshArgs {
     /// more than half a second).
     #[arg(long)]
     pub no_progress: bool,
+    /// Let the files the input names (`mesh` and `png` paths) come from DIR too (repeatable).
+    /// Without it they must lie inside the input's own folder: relative paths, no `..` or
+    /// symbolic link leading out, no absolute paths.
+    #[arg(long, value_name = "DIR")]
+    pub allow_path: Vec<PathBuf>,
 }
 
 /// `--facets`: round primitives of `.csg` inputs.
@@ -203,6 +208,11 @@ pub struct ConvertArgs {
     /// Write the JSON tree here (replaced atomically).
     #[arg(short, long)]
     pub output: PathBuf,
+    /// Let the files the input names (`mesh` and `png` paths) come from DIR too (repeatable).
+    /// Without it they must lie inside the input's own folder: relative paths, no `..` or
+    /// symbolic link leading out, no absolute paths.
+    #[arg(long, value_name = "DIR")]
+    pub allow_path: Vec<PathBuf>,
 }
 
 /// Arguments of `solidkit bench`.

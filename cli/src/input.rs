@@ -1,20 +1,38 @@
 //! Loading a solid from a file, by extension; errors name the file and the place in it.
+//!
+//! The input is read as a regular file within the size cap; the files it names (`mesh` and
+//! `heightfield` `png` paths, in JSON trees and Rhai scripts alike) resolve relative to its folder
+//! and may not leave it, except into the folders given by `--allow-path`.
 
-use anyhow::{Context, Result, bail};
+use anyhow::{Result, bail};
+use solidkit_kernel::files::{DEFAULT_MAX_FILE_BYTES, FileAccess, read_regular_file};
 use solidkit_kernel::{Solid, json};
 use solidkit_meshing::io::FileMeshResolver;
-use std::path::Path;
+use std::path::{Path, PathBuf};
 use std::sync::Arc;
 
 pub use crate::frontends::csg::Facets;
 
-/// Reads and validates the solid in `path` (round `.csg` primitives exact).
-pub fn load_solid(path: &Path) -> Result<Solid> {
-    load_solid_with(path, Facets::Exact)
+/// Reads and validates the solid in `path` (round `.csg` primitives exact); the files it names
+/// may come from its folder and the folders `allow`.
+pub fn load_solid(path: &Path, allow: &[PathBuf]) -> Result<Solid> {
+    load_solid_with(path, Facets::Exact, allow)
 }
 
-/// Reads and validates the solid in `path`; `facets` says how `.csg` round primitives are built.
-pub fn load_solid_with(path: &Path, facets: Facets) -> Result<Solid> {
+/// The file access of the input `path`: its folder, plus the folders `allow` (`--allow-path`).
+fn file_access(path: &Path, allow: &[PathBuf]) -> Result<FileAccess> {
+    let mut access = FileAccess::for_tree_file(path);
+    for dir in allow {
+        access = access
+            .allow(dir)
+            .map_err(|e| anyhow::anyhow!("--allow-path {e}"))?;
+    }
+    Ok(access)
+}
+
+/// Reads and validates the solid in `path`; `facets` says how `.csg` round primitives are built,
+/// `allow` lists the folders outside the input's own that its files may come from.
+pub fn load_solid_with(path: &Path, facets: Facets, allow: &[PathBuf]) -> Result<Solid> {
     let name = path.display();
     let ext = path
         .extension()
@@ -29,7 +47,8 @@ pub fn load_solid_with(path: &Path, facets: Facets) -> Result<Solid> {
             "{name}: no file extension (expected a .json tree, a .rhai script or a .csg file)"
         ),
     }
-    let bytes = std::fs::read(path).with_context(|| format!("{name}"))?;
+    let access = file_access(path, allow)?;
+    let bytes = read_regular_file(path, DEFAULT_MAX_FILE_BYTES)?;
     let text = match String::from_utf8(bytes) {
         Ok(t) => t,
         Err(e) => bail!(
@@ -37,8 +56,8 @@ pub fn load_solid_with(path: &Path, facets: Facets) -> Result<Solid> {
             e.utf8_error().valid_up_to()
         ),
     };
-    // `mesh` nodes name their files relative to the tree file's folder.
-    let resolver = FileMeshResolver::for_tree_file(path);
+    // `mesh` and `png` paths are relative to the tree file's folder and confined to it.
+    let resolver = FileMeshResolver::with_access(access);
     let solid = match ext.as_deref() {
         Some("rhai") => crate::frontends::rhai::eval(&text, &name.to_string(), Arc::new(resolver))?,
         Some("csg") => crate::frontends::csg::import(&text, facets)

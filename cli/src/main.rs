@@ -5,6 +5,7 @@
 
 mod args;
 mod commands;
+mod escape;
 mod frontends;
 mod input;
 mod output;
@@ -76,7 +77,7 @@ fn clean_up_on_signals() {
     }
 }
 
-/// The error and its causes on one line.
+/// The error and its causes on one line, control characters escaped.
 fn one_line(e: &anyhow::Error) -> String {
-    format!("{e:#}").replace('\n', " ")
+    escape::one_line(&format!("{e:#}"))
 }

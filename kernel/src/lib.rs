@@ -15,6 +15,7 @@ pub mod closest;
 pub mod curve;
 mod error;
 mod field;
+pub mod files;
 mod interval;
 pub mod json;
 mod mesh;

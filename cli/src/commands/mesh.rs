@@ -17,7 +17,7 @@ use std::time::Instant;
 
 /// Meshes the input and prints the report; exit code 0.
 pub fn run(a: &MeshArgs) -> Result<u8> {
-    let mut solid = input::load_solid_with(&a.input, a.facets.into())?;
+    let mut solid = input::load_solid_with(&a.input, a.facets.into(), &a.allow_path)?;
     let bounds = match a.bounds {
         Some(b) => {
             // Explicit bounds clip the solid, so the mesh is closed even for unbounded solids.

@@ -1,5 +1,14 @@
 //! A JSON parser that builds a flat arena of values with their byte offsets, without recursion:
 //! nesting depth is limited only by memory, and dropping the arena is flat too.
+//!
+//! Strict where JSON readers differ: a key repeated in one object and a raw control character
+//! inside a string are errors at their offset (never "the first (or last) one wins").
+
+use std::collections::HashSet;
+
+/// Objects with more keys than this check a new key against a hash set of the earlier ones
+/// instead of scanning them, so duplicate detection stays linear on huge objects.
+const SCAN_KEYS: usize = 16;
 
 /// A parsed JSON value; containers refer to other values by arena index.
 #[derive(Debug, Clone, PartialEq)]
@@ -55,6 +64,8 @@ struct Parser<'a> {
     doc: Document,
     /// Open containers (arena indices) and, for objects, the key awaiting its value.
     open: Vec<(u32, Option<String>)>,
+    /// The keys of open objects with more than [`SCAN_KEYS`] entries, by arena index.
+    key_sets: Vec<(u32, HashSet<String>)>,
 }
 
 fn err<T>(offset: usize, message: impl Into<String>) -> Result<T, SyntaxError> {
@@ -71,6 +82,7 @@ pub(crate) fn parse(text: &str) -> Result<Document, SyntaxError> {
         i: 0,
         doc: Document::default(),
         open: Vec::new(),
+        key_sets: Vec::new(),
     };
     p.run()?;
     Ok(p.doc)
@@ -169,8 +181,31 @@ impl Parser<'_> {
 
     fn close(&mut self, _at: usize) -> Result<Expect, SyntaxError> {
         self.i += 1;
-        self.open.pop();
+        if let Some((idx, _)) = self.open.pop()
+            && self.key_sets.last().is_some_and(|(o, _)| *o == idx)
+        {
+            self.key_sets.pop();
+        }
         Ok(Expect::CommaOrEnd)
+    }
+
+    /// Whether the innermost open object already has the key `k`.
+    fn is_duplicate(&mut self, k: &str) -> bool {
+        let Some(&(idx, _)) = self.open.last() else {
+            return false;
+        };
+        let Value::Object(entries) = &self.doc.values[idx as usize] else {
+            return false;
+        };
+        if entries.len() <= SCAN_KEYS {
+            return entries.iter().any(|(e, _)| e == k);
+        }
+        if self.key_sets.last().is_none_or(|(o, _)| *o != idx) {
+            let keys = entries.iter().map(|(e, _)| e.clone()).collect();
+            self.key_sets.push((idx, keys));
+        }
+        let (_, keys) = self.key_sets.last_mut().expect("pushed above");
+        !keys.insert(k.to_owned())
     }
 
     fn key(&mut self, c: u8, at: usize) -> Result<Expect, SyntaxError> {
@@ -178,6 +213,9 @@ impl Parser<'_> {
             return err(at, "expected a quoted object key");
         }
         let k = self.string()?;
+        if self.is_duplicate(&k) {
+            return err(at, format!("duplicate key \"{k}\" in object"));
+        }
         self.skip_ws();
         if self.peek() != Some(b':') {
             return err(self.i, format!("expected ':' after key \"{k}\""));
@@ -405,6 +443,34 @@ mod tests {
         ] {
             let e = parse(text).unwrap_err();
             assert_eq!(e.offset, offset, "{text}: {}", e.message);
+        }
+    }
+
+    #[test]
+    fn duplicate_keys_and_raw_control_characters_are_errors() {
+        let e = parse("{\"a\": 1,\n \"b\": {\"a\": 2}, \"a\": 3}").unwrap_err();
+        assert_eq!(e.offset, 25, "{}", e.message);
+        assert_eq!(e.message, "duplicate key \"a\" in object");
+        // Equal after unescaping is equal.
+        assert!(parse("{\"ab\": 1, \"a\\u0062\": 2}").is_err());
+        // Keys of sibling and nested objects are separate.
+        assert!(parse("[{\"a\": 1}, {\"a\": {\"a\": 1}}]").is_ok());
+        // A large object (hash-set path): the duplicate is found where it is.
+        let mut text = String::from("{");
+        for k in 0..1000 {
+            text += &format!("\"k{k}\": {{\"k{k}\": 0}}, ");
+        }
+        assert!(parse(&(text.clone() + "\"z\": 0}")).is_ok());
+        let at = text.len();
+        let e = parse(&(text + "\"k500\": 0}")).unwrap_err();
+        assert_eq!(
+            (e.offset, e.message.as_str()),
+            (at, "duplicate key \"k500\" in object")
+        );
+        for raw in ["\u{1b}", "\r", "\0", "\n", "\t"] {
+            let e = parse(&format!("{{\"a\": \"x{raw}y\"}}")).unwrap_err();
+            assert_eq!(e.offset, 8, "{raw:?}: {}", e.message);
+            assert!(e.message.contains("control character"), "{}", e.message);
         }
     }
 

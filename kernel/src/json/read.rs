@@ -28,14 +28,15 @@ struct Located {
 type R<T> = Result<T, Located>;
 
 /// Reads a solid from JSON text: either the versioned envelope
-/// `{"format": "solidkit-tree", "version": 1, "root": NODE}` or a bare node. A `mesh` node is an
-/// error here (mesh files need a resolver: see [`from_str_with`]).
+/// `{"format": "solidkit-tree", "version": 1, "root": NODE}` or a bare node. A `mesh` node or a
+/// `heightfield` with a `png` file is an error here (files need a resolver: see
+/// [`from_str_with`]). Duplicate keys and raw control characters in strings are errors.
 pub fn from_str(text: &str) -> Result<Solid, KernelError> {
     from_str_with(text, &NoMeshResolver)
 }
 
-/// Reads a solid from JSON text like [`from_str`], loading the files of `mesh` nodes with
-/// `resolver`.
+/// Reads a solid from JSON text like [`from_str`], loading the files of `mesh` nodes and `png`
+/// height maps with `resolver`.
 pub fn from_str_with(text: &str, resolver: &dyn MeshResolver) -> Result<Solid, KernelError> {
     let doc = parse(text).map_err(|e| to_error(text, e.offset, e.message))?;
     Reader {

@@ -417,3 +417,49 @@ fn random_mesh_over(rng: &mut Xorshift, positions: Vec<DVec3>, n: usize) -> Inde
     let triangles = (0..n).map(|_| [pick(), pick(), pick()]).collect();
     IndexedMesh::new(positions, triangles)
 }
+
+/// Repeated triangles (same vertex indices, any order) are tested once for the whole group; the
+/// count and the examples are still those of every pair.
+#[test]
+fn repeated_triangles_count_every_pair() {
+    let mut rng = Xorshift(777);
+    for (n, pool, copies) in [(60, 30, 40), (300, 80, 200), (800, 1000, 500)] {
+        let mut mesh = random_mesh(&mut rng, n, pool);
+        for _ in 0..copies {
+            let k = (rng.unit() * mesh.triangles.len() as f64) as usize;
+            let [a, b, c] = mesh.triangles[k];
+            let copy = match (rng.unit() * 3.0) as u32 {
+                0 => [a, b, c],
+                1 => [b, c, a],
+                _ => [a, c, b],
+            };
+            let at = (rng.unit() * mesh.triangles.len() as f64) as usize;
+            mesh.triangles.insert(at, copy);
+        }
+        let want = all_pairs(&mesh);
+        for limit in [1000, 8, 1] {
+            let got = self_intersections(&mesh, limit).unwrap();
+            assert_eq!(got.count, want.len(), "n={n} limit={limit}");
+            assert_eq!(got.examples, want[..want.len().min(limit)], "n={n}");
+        }
+    }
+}
+
+/// 40 000 copies of one triangle (a 2 MB STL) take one test, not 8 · 10⁸.
+#[test]
+fn many_coincident_triangles_are_fast() {
+    let positions = vec![
+        v(0.0, 0.0, 0.0),
+        v(1.0, 0.0, 0.0),
+        v(0.0, 1.0, 0.0),
+        v(5.0, 5.0, 5.0),
+    ];
+    let mut triangles = vec![[0, 1, 2]; 40_000];
+    triangles.push([1, 3, 2]);
+    let mesh = IndexedMesh::new(positions, triangles);
+    let start = std::time::Instant::now();
+    let got = self_intersections(&mesh, 4).unwrap();
+    assert!(start.elapsed().as_secs_f64() < 2.0, "{:?}", start.elapsed());
+    assert_eq!(got.count, 40_000 * 39_999 / 2);
+    assert_eq!(got.examples, [[0, 1], [0, 2], [0, 3], [0, 4]]);
+}

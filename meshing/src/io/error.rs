@@ -36,6 +36,10 @@ pub enum MeshIoError {
         /// What the operating system reported.
         source: std::io::Error,
     },
+    /// The file could not be read: missing, not a regular file, too large, or (for files named in
+    /// a tree) outside the folders it may read.
+    #[error(transparent)]
+    File(#[from] solidkit_kernel::files::FileError),
     /// The content of the file is invalid at a known place.
     #[error("{}: {message}", located(.path, .location))]
     Parse {

@@ -9,6 +9,11 @@
 //! (never as fans), and the vertices of an STL file (which has no shared vertices) are welded
 //! where bit-identical, so a closed STL becomes a closed indexed mesh.
 //!
+//! Files are read by [`read_regular_file`]: regular files only, at most
+//! [`DEFAULT_MAX_FILE_BYTES`] (1 GiB); files named in trees go through [`FileMeshResolver`],
+//! which confines them to the tree's folder. An error about a file that is not of the expected
+//! format never quotes its content.
+//!
 //! Writers go through [`write_atomic`]: a failed write leaves no partial file behind and an
 //! existing file untouched.
 //!
@@ -44,6 +49,7 @@ use std::io::Write;
 use std::path::Path;
 
 use crate::IndexedMesh;
+use solidkit_kernel::files::{DEFAULT_MAX_FILE_BYTES, read_regular_file};
 
 pub use atomic::{remove_temporary_files_and_exit, write_atomic};
 pub use error::{Location, MeshIoError};
@@ -132,13 +138,11 @@ pub struct WriteOptions {
     pub encoding: Encoding,
 }
 
-/// Reads a mesh file, in the format named by its extension.
+/// Reads a mesh file, in the format named by its extension: a regular file (no device, FIFO or
+/// directory) of at most [`DEFAULT_MAX_FILE_BYTES`](solidkit_kernel::files::DEFAULT_MAX_FILE_BYTES).
 pub fn read_mesh(path: &Path) -> Result<IndexedMesh, MeshIoError> {
     let format = MeshFormat::from_path(path)?;
-    let bytes = std::fs::read(path).map_err(|source| MeshIoError::Io {
-        path: path.to_path_buf(),
-        source,
-    })?;
+    let bytes = read_regular_file(path, DEFAULT_MAX_FILE_BYTES)?;
     read_mesh_bytes(&bytes, format, &path.display().to_string())
 }
 

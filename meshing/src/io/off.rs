@@ -143,10 +143,8 @@ fn check_keyword(keyword: &[u8]) -> Result<(), String> {
             "unsupported OFF variant '{}' (only 3D OFF is read)",
             show(keyword)
         )),
-        None => Err(format!(
-            "not an OFF file: expected 'OFF', found '{}'",
-            show(keyword)
-        )),
+        // Not quoted: the file may be anything (its content stays out of messages).
+        None => Err("not an OFF file (the first word must be 'OFF')".into()),
     }
 }
 

@@ -113,10 +113,10 @@ impl From<IndexedMesh> for PolygonMesh {
 /// a face with fewer than three corners or a repeated vertex is reported at its line.
 pub fn read_polygon_mesh(path: &Path) -> Result<PolygonMesh, MeshIoError> {
     let format = MeshFormat::from_path(path)?;
-    let bytes = std::fs::read(path).map_err(|source| MeshIoError::Io {
-        path: path.to_path_buf(),
-        source,
-    })?;
+    let bytes = solidkit_kernel::files::read_regular_file(
+        path,
+        solidkit_kernel::files::DEFAULT_MAX_FILE_BYTES,
+    )?;
     read_polygon_mesh_bytes(&bytes, format, &path.display().to_string())
 }
 

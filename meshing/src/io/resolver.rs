@@ -1,48 +1,79 @@
-//! The mesh-file resolver of JSON trees: `mesh` nodes name their file by a path, read here with
-//! [`read_mesh`](super::read_mesh) relative to a base folder (the folder of the tree file), so a
-//! tree and its meshes can move together. It also carries out the `subdivide` nodes the kernel
-//! records: the child's polygon mesh (inline faces, or a file read with its polygons by
-//! [`read_polygon_mesh`](super::read_polygon_mesh)) becomes a [`HalfEdgeMesh`], is subdivided by
-//! [`crate::subdivision`] within the default [`Limits`], and goes back triangulated
+//! The file resolver of JSON trees: `mesh` nodes name their file by a path, and `heightfield`
+//! nodes their PNG height map, read here relative to a base folder (the folder of the tree file),
+//! so a tree and its files can move together. Paths are confined by a [`FileAccess`]: they must
+//! stay inside that folder (or a folder the user allowed) once `..` and symbolic links are
+//! resolved, absolute paths are refused, and only regular files within the size cap are read.
+//! Mesh files are parsed by [`read_mesh_bytes`](super::read_mesh_bytes) in the format of the
+//! extension written in the tree; errors name the file as the tree writes it.
+//!
+//! It also carries out the `subdivide` nodes the kernel records: the child's polygon mesh (inline
+//! faces, or a file read the same way with its polygons by
+//! [`read_polygon_mesh_bytes`](super::read_polygon_mesh_bytes)) becomes a [`HalfEdgeMesh`], is
+//! subdivided by [`crate::subdivision`] within the default [`Limits`], and goes back triangulated
 //! ([`PolygonMesh::triangulated`]).
 
 use std::path::{Path, PathBuf};
 
 use solidkit_kernel::IndexedMesh;
+use solidkit_kernel::files::{FileAccess, FileError};
 use solidkit_kernel::json::MeshResolver;
 use solidkit_kernel::primitive::{SubdivisionInput, SubdivisionRequest};
 
-use super::PolygonMesh;
+use super::{MeshFormat, MeshIoError, PolygonMesh};
 use crate::HalfEdgeMesh;
 use crate::subdivision::{Limits, subdivide};
 
-/// Reads the mesh files of `mesh` nodes; relative paths are taken from `base`, absolute ones as
-/// they are.
+/// Reads the files of `mesh` and `heightfield` nodes as its [`FileAccess`] allows.
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub struct FileMeshResolver {
-    base: PathBuf,
+    access: FileAccess,
 }
 
 impl FileMeshResolver {
-    /// Resolves relative paths from the folder `base`.
+    /// Resolves relative paths from the folder `base`, confined to it.
     pub fn new(base: impl Into<PathBuf>) -> Self {
-        Self { base: base.into() }
+        Self::with_access(FileAccess::new(base))
     }
 
-    /// Resolves relative paths from the folder holding the tree file `tree`.
+    /// Resolves relative paths from the folder holding the tree file `tree`, confined to it.
     pub fn for_tree_file(tree: &Path) -> Self {
-        Self::new(tree.parent().unwrap_or(Path::new("")))
+        Self::with_access(FileAccess::for_tree_file(tree))
     }
 
-    /// Where the mesh named `path` is read from.
-    pub fn resolve(&self, path: &str) -> PathBuf {
-        self.base.join(path)
+    /// Resolves and reads as `access` says.
+    pub fn with_access(access: FileAccess) -> Self {
+        Self { access }
+    }
+
+    /// The rule files are read by.
+    pub fn access(&self) -> &FileAccess {
+        &self.access
+    }
+
+    /// Where the file named `path` is read from, or why it may not be read.
+    pub fn resolve(&self, path: &str) -> Result<PathBuf, FileError> {
+        self.access.resolve(path)
+    }
+
+    /// The bytes and format of the mesh file named `path` in a tree.
+    fn mesh_bytes(&self, path: &str) -> Result<(MeshFormat, Vec<u8>), MeshIoError> {
+        let format = MeshFormat::from_path(Path::new(path))?;
+        let (_, bytes) = self.access.read(path)?;
+        Ok((format, bytes))
     }
 }
 
 impl MeshResolver for FileMeshResolver {
     fn load(&self, path: &str) -> Result<IndexedMesh, String> {
-        super::read_mesh(&self.resolve(path)).map_err(|e| e.to_string())
+        let (format, bytes) = self.mesh_bytes(path).map_err(|e| e.to_string())?;
+        super::read_mesh_bytes(&bytes, format, path).map_err(|e| e.to_string())
+    }
+
+    fn read_file(&self, path: &str) -> Result<Vec<u8>, String> {
+        self.access
+            .read(path)
+            .map(|(_, bytes)| bytes)
+            .map_err(|e| e.to_string())
     }
 
     fn subdivide(&self, request: &SubdivisionRequest<'_>) -> Result<IndexedMesh, String> {
@@ -50,9 +81,12 @@ impl MeshResolver for FileMeshResolver {
             SubdivisionInput::Faces { vertices, faces } => {
                 HalfEdgeMesh::from_polygons(vertices.to_vec(), faces)
             }
-            SubdivisionInput::File { path } => super::read_polygon_mesh(&self.resolve(path))
-                .map_err(|e| e.to_string())?
-                .to_half_edge(),
+            SubdivisionInput::File { path } => {
+                let (format, bytes) = self.mesh_bytes(path).map_err(|e| e.to_string())?;
+                super::read_polygon_mesh_bytes(&bytes, format, path)
+                    .map_err(|e| e.to_string())?
+                    .to_half_edge()
+            }
         }
         .map_err(|e| format!("cannot subdivide the child: {e}"))?;
         let result = subdivide(&mesh, request.scheme, request.levels, &Limits::default())

@@ -131,6 +131,8 @@ struct AsciiStl<'a> {
     name: &'a str,
     welder: Welder,
     triangles: Vec<[u32; 3]>,
+    /// A `facet` was seen: the file is an ASCII STL, so messages may quote its tokens.
+    recognized: bool,
 }
 
 fn read_ascii(bytes: &[u8], name: &str) -> Result<IndexedMesh, MeshIoError> {
@@ -139,6 +141,7 @@ fn read_ascii(bytes: &[u8], name: &str) -> Result<IndexedMesh, MeshIoError> {
         name,
         welder: Welder::default(),
         triangles: Vec::new(),
+        recognized: false,
     };
     parser.solids()?;
     Ok(IndexedMesh::new(
@@ -171,6 +174,7 @@ impl<'a> AsciiStl<'a> {
         loop {
             let (line, token) = self.token("'facet' or 'endsolid'")?;
             if token.eq_ignore_ascii_case(b"facet") {
+                self.recognized = true;
                 self.facet()?;
             } else if token.eq_ignore_ascii_case(b"endsolid") {
                 return Ok(());
@@ -239,12 +243,15 @@ impl<'a> AsciiStl<'a> {
         })
     }
 
+    /// `expected X, found 'Y'`; a file that has not shown a single facet yet may be anything
+    /// that starts with `solid`, so its content is not quoted.
     fn unexpected(&self, line: usize, token: &[u8], expected: &str) -> MeshIoError {
-        MeshIoError::parse(
-            self.name,
-            Location::Line(line),
-            format!("expected {expected}, found '{}'", show(token)),
-        )
+        let message = if self.recognized {
+            format!("expected {expected}, found '{}'", show(token))
+        } else {
+            format!("not an ASCII STL file: expected {expected}")
+        };
+        MeshIoError::parse(self.name, Location::Line(line), message)
     }
 }
 

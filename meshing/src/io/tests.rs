@@ -203,7 +203,7 @@ fn unknown_extensions_are_unsupported() {
 #[test]
 fn missing_file_is_an_io_error_naming_it() {
     let e = read_mesh(Path::new("/definitely/not/here.stl")).expect_err("missing");
-    assert!(matches!(e, MeshIoError::Io { .. }));
+    assert!(matches!(e, MeshIoError::File(_)));
     assert!(e.to_string().starts_with("/definitely/not/here.stl: "));
 }
 
@@ -766,4 +766,42 @@ fn random_polygon_faces_are_triangulated_or_rejected() {
         triangulated > 40,
         "only {triangulated} random faces were valid"
     );
+}
+
+/// Errors about a file that is not of the expected format never quote its content (a `mesh`
+/// node may point at a link to any file), and quoted tokens never carry control characters.
+#[test]
+fn foreign_content_is_never_quoted() {
+    let secret = b"root:x:0:0:root:/root:/bin/bash\ndaemon:x:1:1:daemon:/usr/sbin\n";
+    for format in [
+        MeshFormat::Stl,
+        MeshFormat::Obj,
+        MeshFormat::Ply,
+        MeshFormat::Off,
+    ] {
+        let text = match read_mesh_bytes(secret, format, "x") {
+            Err(e) => e.to_string(),
+            // OBJ ignores lines it does not know: no faces, nothing quoted.
+            Ok(mesh) if format == MeshFormat::Obj && mesh.triangles.is_empty() => continue,
+            Ok(mesh) => panic!("{format:?}: read as {mesh:?}"),
+        };
+        assert!(
+            !text.contains("root") && !text.contains("daemon"),
+            "{format:?}: {text}"
+        );
+    }
+    // A text file that happens to start with `solid` is not quoted either.
+    let e = read_mesh_bytes(
+        b"solid state\nsecret words here\n",
+        MeshFormat::Stl,
+        "x.stl",
+    )
+    .expect_err("not an STL");
+    assert!(!e.to_string().contains("secret"), "{e}");
+    // Inside a recognised file tokens are quoted, with control characters escaped.
+    let stl = b"solid t\nfacet normal 0 0 1\nouter loop\nvertex 0 0 \x1b[31m\n";
+    let e = read_mesh_bytes(stl, MeshFormat::Stl, "t.stl").expect_err("bad number");
+    let text = e.to_string();
+    assert!(text.contains("\\u{1b}[31m"), "{text}");
+    assert!(!text.chars().any(char::is_control), "{text:?}");
 }

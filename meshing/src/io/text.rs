@@ -82,15 +82,23 @@ impl<'a> Tokens<'a> {
     }
 }
 
-/// A token for messages: lossy UTF-8, shortened to 40 characters.
+/// A token for messages: lossy UTF-8, control characters escaped (`\u{1b}`), shortened to 40
+/// characters.
 pub(super) fn show(token: &[u8]) -> String {
     let text = String::from_utf8_lossy(token);
-    if text.chars().count() > 40 {
-        let head: String = text.chars().take(37).collect();
-        format!("{head}...")
-    } else {
-        text.into_owned()
+    let mut out = String::new();
+    for (count, c) in text.chars().enumerate() {
+        if count == 37 && text.chars().count() > 40 {
+            out.push_str("...");
+            break;
+        }
+        if c.is_control() {
+            out.extend(c.escape_default());
+        } else {
+            out.push(c);
+        }
     }
+    out
 }
 
 /// Parses a decimal floating-point number (`inf` and `nan` included: callers check finiteness).

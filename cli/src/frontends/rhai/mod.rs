@@ -166,8 +166,8 @@ fn engine(
     engine.on_progress(move |ops| {
         (ops % 1024 == 0 && start.elapsed() > max_time).then(|| Dynamic::from(error::TIMEOUT))
     });
-    engine.on_print(|s| crate::output::errln!("{s}"));
-    engine.on_debug(|s, _, pos| crate::output::errln!("{pos:?}: {s}"));
+    engine.on_print(|s| crate::output::errln!("{}", crate::escape::one_line(s)));
+    engine.on_debug(|s, _, pos| crate::output::errln!("{pos:?}: {}", crate::escape::one_line(s)));
     api::register(&mut engine, limits.max_nodes, resolver, exported);
     engine
 }

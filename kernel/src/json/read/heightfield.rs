@@ -3,8 +3,10 @@
 //! - `"bezier"`: rows of control heights (row j along y, column i along x; degrees = size − 1);
 //! - `"samples"`: rows of heights on a regular grid, with `"interpolation"`: `"bilinear"`
 //!   (default) or `"bicubic"`;
-//! - `"png"`: a grayscale PNG file path (relative to the working directory), with `"heights"`:
-//!   [black, white] and the optional `"interpolation"`.
+//! - `"png"`: a grayscale PNG file path, read through the reader's
+//!   [`MeshResolver`](crate::primitive::MeshResolver) (relative to the tree file's folder and
+//!   confined to it, like `mesh` paths), with `"heights"`: [black, white] and the optional
+//!   `"interpolation"`.
 
 use super::super::document::Value;
 use super::{Params, R};
@@ -13,7 +15,6 @@ use crate::primitive::heightfield::{
     HeightField, HeightFieldError, HeightGrid, HeightSource, Interpolation,
 };
 use glam::DVec2;
-use std::path::Path;
 use std::sync::Arc;
 
 impl Params<'_, '_> {
@@ -38,7 +39,9 @@ impl Params<'_, '_> {
             HeightFieldError::Parameter(p) => {
                 self.fail(at_key(p.parameter), p.parameter, p.problem)
             }
-            HeightFieldError::Io { .. }
+            HeightFieldError::Io(_)
+            | HeightFieldError::Unreadable { .. }
+            | HeightFieldError::ImageTooLarge { .. }
             | HeightFieldError::Png(_)
             | HeightFieldError::NotGrayscale { .. } => self.fail(at_key("png"), "png", e),
             other => self.fail(at_key(present[0]), present[0], other),
@@ -64,9 +67,22 @@ impl Params<'_, '_> {
                 let path = self.heightfield_string("png")?;
                 let heights = self.numbers::<2>(self.at("heights")?, "heights")?;
                 let interpolation = self.height_interpolation()?;
-                let f =
-                    HeightField::from_png(min, max, base, Path::new(path), heights, interpolation)
-                        .map_err(to_located)?;
+                let bytes = self.reader.resolver.read_file(path).map_err(|reason| {
+                    to_located(HeightFieldError::Unreadable {
+                        path: path.to_owned(),
+                        reason,
+                    })
+                })?;
+                let f = HeightField::from_png_bytes(
+                    min,
+                    max,
+                    base,
+                    path,
+                    &bytes,
+                    heights,
+                    interpolation,
+                )
+                .map_err(to_located)?;
                 (
                     f,
                     &["min", "max", "base", "png", "heights", "interpolation"],

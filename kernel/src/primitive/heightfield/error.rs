@@ -1,7 +1,6 @@
 //! Why a height field cannot be built or loaded.
 
 use crate::primitive::PrimitiveError;
-use std::path::PathBuf;
 
 /// A height field that cannot be built or loaded.
 #[derive(Debug, thiserror::Error)]
@@ -46,12 +45,28 @@ pub enum HeightFieldError {
         row: usize,
     },
     /// The height map file cannot be read.
-    #[error("cannot read height map {path}: {source}")]
-    Io {
-        /// The file.
-        path: PathBuf,
-        /// The I/O error.
-        source: std::io::Error,
+    #[error("cannot read height map {0}")]
+    Io(#[from] crate::files::FileError),
+    /// The height map file cannot be read; the reason comes from a
+    /// [`MeshResolver`](crate::primitive::MeshResolver).
+    #[error("cannot read height map {path:?}: {reason}")]
+    Unreadable {
+        /// The path as written.
+        path: String,
+        /// Why not.
+        reason: String,
+    },
+    /// The image declares more pixels than a height map may have.
+    #[error(
+        "PNG height map of {width} × {height} pixels is too large (at most {} pixels a side and {} pixels in all)",
+        super::MAX_PNG_SIDE,
+        super::MAX_PNG_PIXELS
+    )]
+    ImageTooLarge {
+        /// Declared width.
+        width: u32,
+        /// Declared height.
+        height: u32,
     },
     /// The PNG data is malformed.
     #[error("cannot decode PNG height map: {0}")]

@@ -21,7 +21,7 @@ mod source;
 
 pub use error::HeightFieldError;
 pub use grid::HeightGrid;
-pub use png_map::{decode_png, load_png};
+pub use png_map::{MAX_PNG_DECODER_BYTES, MAX_PNG_PIXELS, MAX_PNG_SIDE, decode_png, load_png};
 pub use source::{HeightSource, Interpolation};
 
 use super::{Cuboid, PrimitiveError, Shape};
@@ -124,6 +124,44 @@ impl HeightField {
             return Err(parameter("heights", "expected finite numbers"));
         }
         let unit = load_png(path)?;
+        Self::from_height_map(
+            min,
+            max,
+            base,
+            &path.to_string_lossy(),
+            unit,
+            heights,
+            interpolation,
+        )
+    }
+
+    /// A height field from the bytes of a grayscale PNG; `path` is the file's name as the tree
+    /// writes it (kept for writing the tree back).
+    pub fn from_png_bytes(
+        min: DVec2,
+        max: DVec2,
+        base: f64,
+        path: &str,
+        bytes: &[u8],
+        heights: [f64; 2],
+        interpolation: Interpolation,
+    ) -> Result<Self, HeightFieldError> {
+        if !heights.iter().all(|h| h.is_finite()) {
+            return Err(parameter("heights", "expected finite numbers"));
+        }
+        let unit = decode_png(bytes)?;
+        Self::from_height_map(min, max, base, path, unit, heights, interpolation)
+    }
+
+    fn from_height_map(
+        min: DVec2,
+        max: DVec2,
+        base: f64,
+        path: &str,
+        unit: HeightGrid,
+        heights: [f64; 2],
+        interpolation: Interpolation,
+    ) -> Result<Self, HeightFieldError> {
         let values = unit
             .values()
             .iter()
@@ -140,7 +178,7 @@ impl HeightField {
             },
         )?;
         field.origin = Some(PngOrigin {
-            path: path.to_string_lossy().into_owned(),
+            path: path.to_owned(),
             heights,
         });
         Ok(field)

@@ -2,19 +2,43 @@
 //! with the `png` crate into a [`HeightGrid`] of values in `[0, 1]` (black 0, white 1). Image row 0
 //! is the top of the picture and maps to the largest y, so the map seen from above looks like the
 //! image.
+//!
+//! Budgets: the image's declared size is checked against [`MAX_PNG_SIDE`] and [`MAX_PNG_PIXELS`]
+//! before any pixel buffer is allocated (a small file can declare a huge image), and the decoder
+//! itself runs under `png::Limits` of [`MAX_PNG_DECODER_BYTES`].
 
 use super::error::HeightFieldError;
 use super::grid::HeightGrid;
+use crate::files::{DEFAULT_MAX_FILE_BYTES, read_regular_file};
 use std::path::Path;
+
+/// The largest width or height of a PNG height map, in pixels.
+pub const MAX_PNG_SIDE: u32 = 16_384;
+/// The largest pixel count of a PNG height map (4096 × 4096; 128 MiB of `f64` heights).
+pub const MAX_PNG_PIXELS: u64 = 1 << 24;
+/// What the PNG decoder may allocate (its image buffer included): enough for the largest
+/// allowed image at 16 bits per pixel, expanded.
+pub const MAX_PNG_DECODER_BYTES: usize = 3 * (1 << 25);
 
 /// Decodes a grayscale PNG into heights in `[0, 1]`.
 pub fn decode_png(bytes: &[u8]) -> Result<HeightGrid, HeightFieldError> {
-    let mut decoder = png::Decoder::new(std::io::Cursor::new(bytes));
+    let limits = png::Limits {
+        bytes: MAX_PNG_DECODER_BYTES,
+    };
+    let mut decoder = png::Decoder::new_with_limits(std::io::Cursor::new(bytes), limits);
     decoder.set_transformations(png::Transformations::EXPAND);
     let mut reader = decoder.read_info()?;
+    let (width, height) = (reader.info().width, reader.info().height);
+    if width > MAX_PNG_SIDE
+        || height > MAX_PNG_SIDE
+        || u64::from(width) * u64::from(height) > MAX_PNG_PIXELS
+    {
+        return Err(HeightFieldError::ImageTooLarge { width, height });
+    }
     let size = reader
         .output_buffer_size()
-        .ok_or(png::DecodingError::LimitsExceeded)?;
+        .filter(|&n| n <= MAX_PNG_DECODER_BYTES)
+        .ok_or(HeightFieldError::ImageTooLarge { width, height })?;
     let mut buf = vec![0; size];
     let info = reader.next_frame(&mut buf)?;
     let bits = info.bit_depth as u8;
@@ -42,11 +66,8 @@ pub fn decode_png(bytes: &[u8]) -> Result<HeightGrid, HeightFieldError> {
     HeightGrid::new(w, h, values)
 }
 
-/// Reads and decodes a grayscale PNG file.
+/// Reads and decodes a grayscale PNG file (a regular file of at most
+/// [`DEFAULT_MAX_FILE_BYTES`]).
 pub fn load_png(path: &Path) -> Result<HeightGrid, HeightFieldError> {
-    let bytes = std::fs::read(path).map_err(|source| HeightFieldError::Io {
-        path: path.to_path_buf(),
-        source,
-    })?;
-    decode_png(&bytes)
+    decode_png(&read_regular_file(path, DEFAULT_MAX_FILE_BYTES)?)
 }

@@ -298,7 +298,7 @@ fn png_file_makes_a_height_field() {
         [0.0, 1.0],
         Interpolation::Bilinear,
     );
-    assert!(matches!(missing, Err(HeightFieldError::Io { .. })));
+    assert!(matches!(missing, Err(HeightFieldError::Io(_))));
     std::fs::remove_dir_all(&dir).unwrap();
 }
 
@@ -313,4 +313,74 @@ fn invalid_height_fields_are_rejected() {
     assert!(HeightGrid::from_rows(&[vec![1.0, 2.0], vec![1.0]]).is_err());
     assert!(HeightGrid::new(1, 3, vec![0.0; 3]).is_err());
     assert!(HeightGrid::new(2, 2, vec![0.0, f64::NAN, 0.0, 0.0]).is_err());
+}
+
+/// The PNG with its IHDR patched to declare `width × height` (CRC recomputed).
+fn declaring(png: &[u8], width: u32, height: u32) -> Vec<u8> {
+    fn crc32(bytes: &[u8]) -> u32 {
+        let mut c = !0u32;
+        for &b in bytes {
+            c ^= u32::from(b);
+            for _ in 0..8 {
+                c = if c & 1 == 1 {
+                    (c >> 1) ^ 0xEDB8_8320
+                } else {
+                    c >> 1
+                };
+            }
+        }
+        !c
+    }
+    let mut out = png.to_vec();
+    assert_eq!(&out[12..16], b"IHDR");
+    out[16..20].copy_from_slice(&width.to_be_bytes());
+    out[20..24].copy_from_slice(&height.to_be_bytes());
+    let crc = crc32(&out[12..29]);
+    out[29..33].copy_from_slice(&crc.to_be_bytes());
+    out
+}
+
+#[test]
+fn huge_declared_images_are_refused_before_allocating() {
+    let small = encode(
+        2,
+        2,
+        ::png::BitDepth::Eight,
+        ::png::ColorType::Grayscale,
+        &[0, 1, 2, 3],
+    );
+    assert!(decode_png(&declaring(&small, 2, 2)).is_ok());
+    for (w, h) in [(30_000, 30_000), (MAX_PNG_SIDE + 1, 2), (4097, 4097)] {
+        let start = std::time::Instant::now();
+        let e = decode_png(&declaring(&small, w, h)).unwrap_err();
+        assert!(
+            matches!(e, HeightFieldError::ImageTooLarge { width, height } if (width, height) == (w, h)),
+            "{e}"
+        );
+        assert!(e.to_string().contains(&format!("{w} × {h} pixels")), "{e}");
+        assert!(start.elapsed().as_secs_f64() < 0.5);
+    }
+}
+
+#[test]
+fn the_largest_allowed_image_decodes() {
+    let side = 4096u32;
+    let data = vec![7u8; (side * side * 2) as usize];
+    let png = encode(
+        side,
+        side,
+        ::png::BitDepth::Sixteen,
+        ::png::ColorType::Grayscale,
+        &data,
+    );
+    let g = decode_png(&png).unwrap();
+    assert_eq!((g.nx(), g.ny()), (4096, 4096));
+    let wide = encode(
+        MAX_PNG_SIDE,
+        2,
+        ::png::BitDepth::Eight,
+        ::png::ColorType::Grayscale,
+        &vec![0; 2 * MAX_PNG_SIDE as usize],
+    );
+    assert!(decode_png(&wide).is_ok());
 }

@@ -178,7 +178,7 @@ impl MeshSolid {
 
     /// Number of triangles.
     pub fn triangle_count(&self) -> usize {
-        self.tree.triangles().len()
+        self.tree.count
     }
 
     /// Distance between the field's zero set and the mesh (0).

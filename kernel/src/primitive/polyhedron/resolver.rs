@@ -1,18 +1,31 @@
-//! Loading the mesh files named by `mesh` nodes of JSON trees, and subdividing the polygon meshes
-//! of `subdivide` nodes.
+//! Loading the mesh files named by `mesh` nodes of JSON trees (and the PNG height maps of
+//! `heightfield` nodes), and subdividing the polygon meshes of `subdivide` nodes.
 //!
 //! The kernel reads no mesh files and runs no subdivision itself (the readers and the half-edge
 //! mesh live in `solidkit-meshing`, which depends on the kernel), so the JSON reader asks a
 //! [`MeshResolver`] for them; `solidkit-meshing` provides one (`io::FileMeshResolver`) that reads
-//! files relative to the tree file's folder and subdivides on its half-edge mesh.
+//! files relative to the tree file's folder (confined to it, see [`crate::files::FileAccess`]) and
+//! subdivides on its half-edge mesh.
 
 use super::subdivided::SubdivisionRequest;
 use crate::IndexedMesh;
 
-/// Loads the mesh named by a `mesh` node's `path`, and subdivides `subdivide` nodes.
+/// Loads the mesh named by a `mesh` node's `path` and the height map of a `heightfield` node's
+/// `png`, and subdivides `subdivide` nodes.
 pub trait MeshResolver {
     /// The triangle mesh at `path` (as written in the tree), or a one-line reason why not.
     fn load(&self, path: &str) -> Result<IndexedMesh, String>;
+
+    /// The bytes of the file at `path` (as written in the tree: a PNG height map), or a one-line
+    /// reason why not. The default reads no files and says so.
+    fn read_file(&self, path: &str) -> Result<Vec<u8>, String> {
+        let _ = path;
+        Err(
+            "files named in a tree need a resolver (read the tree with json::from_str_with and \
+             solidkit_meshing::io::FileMeshResolver)"
+                .into(),
+        )
+    }
 
     /// The polygon mesh of `request` subdivided, as triangles counter-clockwise from outside, or
     /// a one-line reason why not. The default has no subdivision and says so.

@@ -3,11 +3,17 @@
 //! vectors, their area-weighted centroid and a radius around it containing all of them, filled
 //! in children first over the BVH's flat nodes (children always come after their parent, so the
 //! pass is a reverse loop).
+//!
+//! Repeated triangles (the same oriented triangle, corners bitwise equal up to rotation) are kept
+//! once with a weight, their number of copies: the winding number counts each copy as before
+//! (weight × solid angle, weight × area vector) and distances do not depend on copies, so the
+//! field is that of the full mesh while a file of 40 000 coincident triangles costs one.
 
 use crate::bvh::TriangleBvh;
 use crate::polyhedra::PolyhedronError;
 use crate::{Aabb, IndexedMesh};
 use glam::DVec3;
+use std::collections::HashMap;
 
 /// A node's far-field data for winding numbers.
 #[derive(Debug, Clone, Copy, Default)]
@@ -24,6 +30,10 @@ pub(crate) struct Dipole {
 #[derive(Debug)]
 pub(crate) struct MeshTree {
     pub bvh: TriangleBvh,
+    /// Copies of each slot's triangle in the mesh (1 unless repeated).
+    pub weights: Vec<f64>,
+    /// Triangles of the mesh, copies included.
+    pub count: usize,
     pub dipoles: Vec<Dipole>,
     pub bbox: Aabb,
     /// Distances up to this count as on the surface (rounding of the nearest-point computation).
@@ -56,14 +66,18 @@ impl MeshTree {
 
     /// The tree of a mesh that passed [`MeshTree::check`].
     pub(crate) fn new(mesh: &IndexedMesh) -> MeshTree {
-        let triangles: Vec<[DVec3; 3]> = (0..mesh.triangles.len())
-            .map(|t| mesh.triangle_positions(t))
-            .collect();
+        let (triangles, copies) =
+            distinct((0..mesh.triangles.len()).map(|t| mesh.triangle_positions(t)));
         let bvh = TriangleBvh::new(triangles, 1).expect("checked: not too many triangles");
+        let weights: Vec<f64> = (0..bvh.len())
+            .map(|s| copies[bvh.slot_index(s) as usize])
+            .collect();
         let bbox = bvh.bbox();
-        let dipoles = dipoles(&bvh);
+        let dipoles = dipoles(&bvh, &weights);
         MeshTree {
             bvh,
+            weights,
+            count: mesh.triangles.len(),
             dipoles,
             bbox,
             tolerance: 64.0 * f64::EPSILON * bbox.min.abs().max(bbox.max.abs()).max_element(),
@@ -76,8 +90,32 @@ impl MeshTree {
     }
 }
 
-/// The dipole of every node, children before parents.
-fn dipoles(bvh: &TriangleBvh) -> Vec<Dipole> {
+/// The distinct oriented triangles (first occurrences, in order) and the number of copies of
+/// each.
+fn distinct(triangles: impl Iterator<Item = [DVec3; 3]>) -> (Vec<[DVec3; 3]>, Vec<f64>) {
+    let key = |t: &[DVec3; 3]| {
+        let bits = t.map(|p| p.to_array().map(f64::to_bits));
+        // The rotation starting at the smallest corner: equal for the same oriented triangle.
+        let k = (0..3).min_by_key(|&k| bits[k]).unwrap_or(0);
+        [bits[k], bits[(k + 1) % 3], bits[(k + 2) % 3]]
+    };
+    let mut index: HashMap<[[u64; 3]; 3], usize> = HashMap::new();
+    let (mut out, mut copies) = (Vec::new(), Vec::new());
+    for t in triangles {
+        let next = out.len();
+        let i = *index.entry(key(&t)).or_insert(next);
+        if i == next {
+            out.push(t);
+            copies.push(1.0);
+        } else {
+            copies[i] += 1.0;
+        }
+    }
+    (out, copies)
+}
+
+/// The dipole of every node, children before parents; slot `s` stands for `copies[s]` copies.
+fn dipoles(bvh: &TriangleBvh, copies: &[f64]) -> Vec<Dipole> {
     let nodes = bvh.nodes();
     let n = nodes.len();
     let mut dipoles = vec![Dipole::default(); n];
@@ -87,8 +125,9 @@ fn dipoles(bvh: &TriangleBvh) -> Vec<Dipole> {
         let node = nodes[i];
         let (mut area, mut weighted, mut weight) = (DVec3::ZERO, DVec3::ZERO, 0.0);
         if node.is_leaf() {
-            for t in &bvh.corners()[node.slots()] {
-                let a = (t[1] - t[0]).cross(t[2] - t[0]) * 0.5;
+            for s in node.slots() {
+                let t = &bvh.corners()[s];
+                let a = (t[1] - t[0]).cross(t[2] - t[0]) * 0.5 * copies[s];
                 let w = a.length();
                 area += a;
                 weighted += (t[0] + t[1] + t[2]) / 3.0 * w;

@@ -54,8 +54,9 @@ impl MeshTree {
                 if dist2 > (BETA * dipole.radius) * (BETA * dipole.radius) {
                     omega += dipole.area.dot(d) / (dist2 * dist2.sqrt());
                 } else if node.is_leaf() {
-                    for &[a, b, c] in &self.triangles()[node.slots()] {
-                        omega += solid_angle(a - q, b - q, c - q);
+                    for s in node.slots() {
+                        let [a, b, c] = self.triangles()[s];
+                        omega += solid_angle(a - q, b - q, c - q) * self.weights[s];
                     }
                 } else {
                     stack.push(node.first);
@@ -71,7 +72,8 @@ impl MeshTree {
     pub(crate) fn winding_number_exact(&self, q: DVec3) -> f64 {
         self.triangles()
             .iter()
-            .map(|[a, b, c]| solid_angle(*a - q, *b - q, *c - q))
+            .zip(&self.weights)
+            .map(|([a, b, c], w)| solid_angle(*a - q, *b - q, *c - q) * w)
             .sum::<f64>()
             / (4.0 * PI)
     }
