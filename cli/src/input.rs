@@ -15,6 +15,12 @@ pub fn load_solid(path: &Path) -> Result<Solid> {
 
 /// Reads and validates the solid in `path`; `facets` says how `.csg` round primitives are built.
 pub fn load_solid_with(path: &Path, facets: Facets) -> Result<Solid> {
+    load_solid_warned(path, facets).map(|(s, _)| s)
+}
+
+/// Reads and validates the solid in `path`, with the front end's warnings, one line each as
+/// `FILE:LINE:COLUMN: problem` (parts of a `.csg` model skipped the way OpenSCAD skips them).
+pub fn load_solid_warned(path: &Path, facets: Facets) -> Result<(Solid, Vec<String>)> {
     let name = path.display();
     let ext = path
         .extension()
@@ -39,14 +45,19 @@ pub fn load_solid_with(path: &Path, facets: Facets) -> Result<Solid> {
     };
     // `mesh` nodes name their files relative to the tree file's folder.
     let resolver = FileMeshResolver::for_tree_file(path);
+    let mut warnings = Vec::new();
     let solid = match ext.as_deref() {
         Some("rhai") => crate::frontends::rhai::eval(&text, &name.to_string(), Arc::new(resolver))?,
-        Some("csg") => crate::frontends::csg::import(&text, facets)
-            .map_err(|e| anyhow::anyhow!("{name}:{e}"))?,
+        Some("csg") => {
+            let (solid, w) = crate::frontends::csg::import_with_warnings(&text, facets)
+                .map_err(|e| anyhow::anyhow!("{name}:{e}"))?;
+            warnings.extend(w.iter().map(|w| format!("{name}:{w}")));
+            solid
+        }
         _ => json::from_str_with(&text, &resolver).map_err(|e| anyhow::anyhow!("{name}:{e}"))?,
     };
     solid
         .validate()
         .map_err(|e| anyhow::anyhow!("{name}: {e}"))?;
-    Ok(solid)
+    Ok((solid, warnings))
 }

@@ -28,7 +28,7 @@ mod fuzz;
 #[cfg(test)]
 mod tests;
 
-pub use error::CsgError;
+pub use error::{CsgError, Warning};
 
 use solidkit_kernel::Solid;
 
@@ -42,8 +42,17 @@ pub enum Facets {
     OpenScad,
 }
 
-/// Imports `.csg` text as a solid (not yet validated; see [`Solid::validate`]).
+/// Imports `.csg` text as a solid (not yet validated; see [`Solid::validate`]); warnings are
+/// dropped (see [`import_with_warnings`]). Used by the tests.
+#[cfg(test)]
 pub fn import(text: &str, facets: Facets) -> Result<Solid, CsgError> {
+    import_with_warnings(text, facets).map(|(s, _)| s)
+}
+
+/// Imports `.csg` text as a solid (not yet validated), with a warning for each part skipped
+/// the way OpenSCAD skips it (a non-finite size, `points = undef`, 3D children of an extrusion,
+/// 2D and 3D children mixed in one group, …).
+pub fn import_with_warnings(text: &str, facets: Facets) -> Result<(Solid, Vec<Warning>), CsgError> {
     let tree = parser::parse(text)?;
     convert::convert(&tree, facets)
 }

@@ -26,6 +26,9 @@ use crate::profile::Profile;
 use crate::{Aabb, Interval};
 use glam::{DVec2, DVec3};
 
+/// Smallest slice scale used in the field (the top slice of a zero-scale extrusion is a point).
+const MIN_SLICE_SCALE: f64 = 1e-12;
+
 /// A profile extruded along z, centred at the origin, with optional twist and end scale.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Extrude {
@@ -55,7 +58,8 @@ impl Extrude {
     }
 
     /// The extrusion of `profile` over height `height`, turned by `twist` degrees and scaled to
-    /// `scale.x` along x and `scale.y` along y at the top.
+    /// `scale.x` along x and `scale.y` along y at the top. Both scales positive, or both zero (a
+    /// cone from the profile to the point above the origin).
     pub fn with_scale(
         profile: Profile,
         height: f64,
@@ -70,8 +74,11 @@ impl Extrude {
         if !twist.is_finite() {
             return Err(invalid("twist", "expected a finite number"));
         }
-        positive("scale", scale.x)?;
-        positive("scale", scale.y)?;
+        // Both zero: a cone to the apex over the profile (OpenSCAD's `scale = 0`).
+        if scale != DVec2::ZERO {
+            positive("scale", scale.x)?;
+            positive("scale", scale.y)?;
+        }
         let twist_rate = twist.to_radians() / height;
         let scale_rate = (scale - 1.0) / height;
         let rp = profile.radius();
@@ -156,6 +163,9 @@ impl Extrude {
             (q, false)
         };
         let (k, theta) = self.slice_transform(p.z);
+        // A zero scale shrinks the top slice to a point: keep the division finite there
+        // (m·d(u/k) tends to |u|, the distance to the apex, as k → 0).
+        let k = k.max(DVec2::splat(MIN_SLICE_SCALE));
         let (sin, cos) = theta.sin_cos();
         let u = DVec2::new(cos * qc.x + sin * qc.y, -sin * qc.x + cos * qc.y);
         let w = u / k;
