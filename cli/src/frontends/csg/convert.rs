@@ -6,7 +6,7 @@ use super::args::numbers;
 use super::error::{CsgError, Warning};
 use super::facets;
 use super::flat::{Flat, Leaf2, Op2, profile};
-use super::hull::{convex_hull, convex_hull_2d};
+use super::hull::{convex_hull, convex_hull_2d, convex_hull_within};
 use super::parser::{Stmt, Tree, Value};
 use glam::{DVec2, DVec3};
 use solidkit_kernel::Solid;
@@ -35,6 +35,11 @@ struct Hullable {
     points: Vec<DVec3>,
     convex: bool,
 }
+
+/// How far the hull of meshed operand points may miss a point, in cells of the operand's grid:
+/// the mesh vertices are only that accurate, and hulling them exactly gives thousands of sliver
+/// faces along rounded-off edges.
+const OPERAND_HULL_CELLS: f64 = 0.5;
 
 /// The conversion's state: how round primitives are built and the warnings so far.
 struct Ctx {
@@ -651,6 +656,61 @@ fn geometry_points(stmt: &Stmt, geom: &Geom) -> Result<Vec<DVec3>, CsgError> {
     if let Some(points) = flat_points(geom) {
         return Ok(points);
     }
+    let points = meshed_points(stmt, geom)?;
+    if points.is_empty() {
+        return Ok(points);
+    }
+    // Reduce to the vertices of their hull, within a fraction of a cell.
+    let (lo, hi) = points.iter().fold(
+        (DVec3::splat(f64::INFINITY), DVec3::splat(f64::NEG_INFINITY)),
+        |(lo, hi), p| (lo.min(*p), hi.max(*p)),
+    );
+    let cell = (hi - lo).max_element() / OPERAND_RESOLUTION as f64;
+    if matches!(geom, Geom::Flat(_)) {
+        return Ok(points);
+    }
+    let eps = OPERAND_HULL_CELLS * cell;
+    // Akl–Toussaint: the hull of the extreme points along a few hundred directions, and only
+    // the points outside it, go to the incremental hull (whose cost grows with points × faces).
+    let n = 256;
+    let mut extreme: Vec<DVec3> = (0..n)
+        .map(|k| {
+            let z = 1.0 - (2 * k + 1) as f64 / n as f64;
+            let phi = k as f64 * std::f64::consts::PI * (3.0 - 5f64.sqrt());
+            let r = (1.0 - z * z).sqrt();
+            let d = DVec3::new(r * phi.cos(), r * phi.sin(), z);
+            points
+                .iter()
+                .copied()
+                .max_by(|a, b| d.dot(*a).total_cmp(&d.dot(*b)))
+                .expect("points")
+        })
+        .collect();
+    let Some((v, f)) = convex_hull_within(&extreme, eps) else {
+        return Ok(points);
+    };
+    let planes: Vec<(DVec3, f64)> = f
+        .iter()
+        .map(|t| {
+            let [a, b, c] = [0, 1, 2].map(|i| v[t[i] as usize]);
+            let n = (b - a).cross(c - a).normalize_or_zero();
+            (n, n.dot(a))
+        })
+        .collect();
+    extreme.extend(
+        points
+            .iter()
+            .filter(|p| planes.iter().any(|(n, d)| n.dot(**p) - d > eps)),
+    );
+    Ok(match convex_hull_within(&extreme, eps) {
+        Some((v, _)) => v,
+        None => points,
+    })
+}
+
+/// The vertices of a marching-cubes mesh of `geom` (2D regions extruded to a unit slab and
+/// flattened).
+fn meshed_points(stmt: &Stmt, geom: &Geom) -> Result<Vec<DVec3>, CsgError> {
     let (solid, flatten) = match geom {
         Geom::Empty => return Ok(Vec::new()),
         Geom::Solid(s) => (s.clone(), false),
@@ -679,6 +739,10 @@ fn geometry_points(stmt: &Stmt, geom: &Geom) -> Result<Vec<DVec3>, CsgError> {
     Ok(points)
 }
 
+/// An operand of `hull()` / `minkowski()`: its geometry, points, and index among the kept
+/// children.
+type Operand = (Geom, Hullable, usize);
+
 /// The non-empty operands of `hull()` / `minkowski()` with their points (known or meshed), all
 /// of the first operand's dimension (others are ignored with a warning, as OpenSCAD does).
 fn operands(
@@ -686,7 +750,7 @@ fn operands(
     children: Vec<Geom>,
     infos: Vec<Option<Hullable>>,
     ctx: &mut Ctx,
-) -> Result<(Option<u8>, Vec<(Geom, Hullable, usize)>), CsgError> {
+) -> Result<(Option<u8>, Vec<Operand>), CsgError> {
     let mut dim = None;
     let mut ignored = false;
     let mut out = Vec::new();
