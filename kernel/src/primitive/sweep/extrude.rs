@@ -1,7 +1,8 @@
 //! Linear extrusion of a profile along z over `[−h/2, h/2]`, optionally twisted (the profile turns
 //! by `twist` degrees from bottom to top) and scaled (its size goes linearly from 1 at the bottom
 //! to `scale` at the top, about the z axis; `scale` may differ along x and y, as OpenSCAD's
-//! `linear_extrude(scale = [sx, sy])`).
+//! `linear_extrude(scale = [sx, sy])`, or be 0 along both: a cone to the apex, whose top slice is
+//! a point and is evaluated with the scale clamped to 10⁻¹²).
 //!
 //! Field. At height `z` (clamped to the slab) the slice is the profile scaled by
 //! `k(z) = 1 + (s − 1)(z + h/2)/h` (per axis: `kx`, `ky`) and then turned by

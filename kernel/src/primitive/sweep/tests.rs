@@ -404,7 +404,7 @@ fn invalid_sweeps_are_rejected() {
         "height"
     );
     assert_eq!(
-        Extrude::new(Profile::circle(1.0).unwrap(), 1.0, 0.0, 0.0)
+        Extrude::new(Profile::circle(1.0).unwrap(), 1.0, 0.0, -0.5)
             .unwrap_err()
             .parameter(),
         "scale"
