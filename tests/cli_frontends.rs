@@ -118,3 +118,33 @@ fn hostile_and_broken_scripts_fail_with_one_located_line() {
         assert!(!out.exists(), "{name}: output written on failure");
     }
 }
+
+/// A `.csg` part OpenSCAD skips with a warning (an `inf` cube) is skipped by `solidkit mesh`
+/// too: the rest meshes, the warning is a located line on standard error and an entry of the
+/// JSON report's `warnings`.
+#[test]
+fn csg_warnings_reach_the_report_and_stderr() {
+    let dir = tempfile::tempdir().expect("temp dir");
+    let input = dir.path().join("warn.csg");
+    std::fs::write(
+        &input,
+        "cube(size = [inf, inf, inf], center = false);\n%sphere(r = 9);\ncube(size = 2, center = true);\n",
+    )
+    .expect("write");
+    let o = solidkit(&["mesh", path_str(&input), "-r", "32", "--json"]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let r: Value = serde_json::from_slice(&o.stdout).expect("JSON report");
+    let expected = format!(
+        "{}:1:1: a size or point is inf or nan: the object is skipped",
+        input.display()
+    );
+    assert_eq!(r["warnings"], serde_json::json!([expected]));
+    let stderr = String::from_utf8_lossy(&o.stderr);
+    assert!(
+        stderr.contains(&format!("warning: {expected}\n")),
+        "{stderr}"
+    );
+    assert_eq!(r["closed"], true);
+    let v = r["volume"].as_f64().expect("volume");
+    assert!((v - 8.0).abs() < 0.05, "{v}");
+}

@@ -33,6 +33,16 @@ fn file_access(path: &Path, allow: &[PathBuf]) -> Result<FileAccess> {
 /// Reads and validates the solid in `path`; `facets` says how `.csg` round primitives are built,
 /// `allow` lists the folders outside the input's own that its files may come from.
 pub fn load_solid_with(path: &Path, facets: Facets, allow: &[PathBuf]) -> Result<Solid> {
+    load_solid_warned(path, facets, allow).map(|(s, _)| s)
+}
+
+/// As [`load_solid_with`], with the front end's warnings, one line each as
+/// `FILE:LINE:COLUMN: problem` (parts of a `.csg` model skipped the way OpenSCAD skips them).
+pub fn load_solid_warned(
+    path: &Path,
+    facets: Facets,
+    allow: &[PathBuf],
+) -> Result<(Solid, Vec<String>)> {
     let name = path.display();
     let ext = path
         .extension()
@@ -58,14 +68,19 @@ pub fn load_solid_with(path: &Path, facets: Facets, allow: &[PathBuf]) -> Result
     };
     // `mesh` and `png` paths are relative to the tree file's folder and confined to it.
     let resolver = FileMeshResolver::with_access(access);
+    let mut warnings = Vec::new();
     let solid = match ext.as_deref() {
         Some("rhai") => crate::frontends::rhai::eval(&text, &name.to_string(), Arc::new(resolver))?,
-        Some("csg") => crate::frontends::csg::import(&text, facets)
-            .map_err(|e| anyhow::anyhow!("{name}:{e}"))?,
+        Some("csg") => {
+            let (solid, w) = crate::frontends::csg::import_with_warnings(&text, facets)
+                .map_err(|e| anyhow::anyhow!("{name}:{e}"))?;
+            warnings.extend(w.iter().map(|w| format!("{name}:{w}")));
+            solid
+        }
         _ => json::from_str_with(&text, &resolver).map_err(|e| anyhow::anyhow!("{name}:{e}"))?,
     };
     solid
         .validate()
         .map_err(|e| anyhow::anyhow!("{name}: {e}"))?;
-    Ok(solid)
+    Ok((solid, warnings))
 }

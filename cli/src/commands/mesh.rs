@@ -17,7 +17,10 @@ use std::time::Instant;
 
 /// Meshes the input and prints the report; exit code 0.
 pub fn run(a: &MeshArgs) -> Result<u8> {
-    let mut solid = input::load_solid_with(&a.input, a.facets.into(), &a.allow_path)?;
+    let (mut solid, warnings) = input::load_solid_warned(&a.input, a.facets.into(), &a.allow_path)?;
+    for w in &warnings {
+        crate::output::errln!("warning: {}", crate::escape::one_line(w));
+    }
     let bounds = match a.bounds {
         Some(b) => {
             // Explicit bounds clip the solid, so the mesh is closed even for unbounded solids.
@@ -84,6 +87,7 @@ pub fn run(a: &MeshArgs) -> Result<u8> {
             ("tolerance", json!(a.tolerance)),
             ("samples_evaluated", json!(stats.samples_evaluated)),
             ("program_length", json!(program.len())),
+            ("warnings", json!(warnings)),
         ];
         outln!("{}", report::to_json(&r, &extra)?)?;
     } else {

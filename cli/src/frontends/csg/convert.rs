@@ -3,14 +3,17 @@
 
 use super::Facets;
 use super::args::numbers;
-use super::error::CsgError;
+use super::error::{CsgError, Warning};
 use super::facets;
 use super::flat::{Flat, Leaf2, Op2, profile};
-use super::hull::{convex_hull, convex_hull_2d};
+use super::hull::{convex_hull, convex_hull_2d, convex_hull_within};
 use super::parser::{Stmt, Tree, Value};
 use glam::{DVec2, DVec3};
 use solidkit_kernel::Solid;
+use solidkit_kernel::polyhedra::Polyhedron;
 use solidkit_kernel::primitive::{Extrude, Primitive, Revolve};
+use solidkit_meshing::marching_cubes::GridSpec;
+use solidkit_meshing::octree::{SparseOptions, mesh_sparse};
 use std::sync::Arc;
 
 /// A statement's geometry.
@@ -24,64 +27,157 @@ enum Geom {
     Flat(Flat),
 }
 
-/// Converts the whole tree (top-level statements form an implicit group).
-pub fn convert(tree: &Tree, facets: Facets) -> Result<Solid, CsgError> {
+/// What `hull()` and `minkowski()` know about a statement under them: the points whose convex
+/// hull is the statement's hull (round primitives faceted the OpenSCAD way), and whether the
+/// statement is convex itself.
+#[derive(Debug, Clone)]
+struct Hullable {
+    points: Vec<DVec3>,
+    convex: bool,
+}
+
+/// How far the hull of meshed operand points may miss a point, in cells of the operand's grid:
+/// the mesh vertices are only that accurate, and hulling them exactly gives thousands of sliver
+/// faces along rounded-off edges.
+const OPERAND_HULL_CELLS: f64 = 0.5;
+
+/// The conversion's state: how round primitives are built and the warnings so far.
+struct Ctx {
+    facets: Facets,
+    warnings: Vec<Warning>,
+}
+
+impl Ctx {
+    fn warn(&mut self, stmt: &Stmt, message: impl Into<String>) {
+        self.warnings.push(Warning {
+            pos: stmt.pos,
+            message: message.into(),
+        });
+    }
+}
+
+/// Converts the whole tree (top-level statements form an implicit group): statements marked `%`
+/// or `*` are left out, and the first statement marked `!` is the whole model. Parts OpenSCAD
+/// skips with a warning are skipped here too, and their warnings returned.
+pub fn convert(tree: &Tree, facets: Facets) -> Result<(Solid, Vec<Warning>), CsgError> {
+    let mut ctx = Ctx {
+        facets,
+        warnings: Vec::new(),
+    };
+    // The arena is in document order, so the first `!` is the one with the smallest index.
+    let marked: Vec<usize> = (0..tree.nodes.len())
+        .filter(|&i| tree.nodes[i].modifiers.root)
+        .collect();
+    let roots: Vec<usize> = match marked.first() {
+        Some(&r) => {
+            if marked.len() > 1 {
+                ctx.warn(
+                    &tree.nodes[marked[1]],
+                    "more than one root modifier (!): the first one is the model",
+                );
+            }
+            vec![r]
+        }
+        None => tree.roots.clone(),
+    };
+    let kept = |i: &usize| !tree.nodes[*i].modifiers.dropped();
+    let roots: Vec<usize> = roots.into_iter().filter(kept).collect();
     let mut results: Vec<Option<Geom>> = vec![None; tree.nodes.len()];
-    let mut work: Vec<(usize, bool)> = tree.roots.iter().rev().map(|&r| (r, false)).collect();
-    while let Some((i, expanded)) = work.pop() {
+    let mut hullable: Vec<Option<Hullable>> = vec![None; tree.nodes.len()];
+    // (statement, children done, under a hull or minkowski).
+    let mut work: Vec<(usize, bool, bool)> =
+        roots.iter().rev().map(|&r| (r, false, false)).collect();
+    while let Some((i, expanded, hulled)) = work.pop() {
         let stmt = &tree.nodes[i];
-        if stmt.name == "hull" {
-            results[i] = Some(hull(tree, i)?);
-        } else if !expanded {
-            work.push((i, true));
-            work.extend(stmt.children.iter().rev().map(|&c| (c, false)));
-        } else {
-            let children = stmt
-                .children
-                .iter()
-                .map(|&c| results[c].take().expect("child converted"))
-                .collect();
-            results[i] = Some(node(stmt, children, facets)?);
+        let kids: Vec<usize> = stmt.children.iter().copied().filter(kept).collect();
+        if !expanded {
+            work.push((i, true, hulled));
+            let h = hulled || matches!(stmt.name.as_str(), "hull" | "minkowski");
+            work.extend(kids.iter().rev().map(|&c| (c, false, h)));
+            continue;
+        }
+        let children: Vec<Geom> = kids
+            .iter()
+            .map(|&c| results[c].take().expect("child converted"))
+            .collect();
+        let infos: Vec<Option<Hullable>> = kids.iter().map(|&c| hullable[c].take()).collect();
+        let (geom, info) = match stmt.name.as_str() {
+            "hull" => hull(stmt, children, infos, &mut ctx)?,
+            "minkowski" => minkowski(tree, &kids, stmt, children, infos, &mut ctx)?,
+            _ => {
+                let facets = if hulled { Facets::OpenScad } else { facets };
+                let geom = node(stmt, children, facets, &mut ctx)?;
+                let info = if hulled {
+                    hullable_of(stmt, &geom, infos)?
+                } else {
+                    None
+                };
+                (geom, info)
+            }
+        };
+        results[i] = Some(geom);
+        if hulled {
+            hullable[i] = info;
         }
     }
-    let top: Vec<Geom> = tree
-        .roots
+    let top: Vec<Geom> = roots
         .iter()
         .map(|&r| results[r].take().expect("root converted"))
         .collect();
     let root = Stmt {
         name: "group".into(),
-        pos: Default::default(),
-        args: Vec::new(),
-        children: Vec::new(),
+        ..Stmt::default()
     };
-    match group(&root, top, Op2::Union)? {
-        Geom::Solid(s) => Ok(s),
-        Geom::Empty => Err(CsgError::Empty),
-        Geom::Flat(_) => Err(CsgError::argument(
-            root.pos,
-            "model",
-            "the top-level geometry is 2D; extrude it to get a solid",
-        )),
-    }
+    let solid = match group(&root, top, Op2::Union, &mut ctx)? {
+        Geom::Solid(s) => s,
+        Geom::Empty => return Err(CsgError::Empty),
+        Geom::Flat(_) => {
+            return Err(CsgError::argument(
+                root.pos,
+                "model",
+                "the top-level geometry is 2D; extrude it to get a solid",
+            ));
+        }
+    };
+    Ok((solid, ctx.warnings))
 }
 
 /// The non-empty children combined: solids by union / `difference` / intersection, 2D regions
-/// by the same operation in 2D; 2D and 3D may not be mixed.
-fn group(stmt: &Stmt, children: Vec<Geom>, op: fn(usize) -> Op2) -> Result<Geom, CsgError> {
+/// by the same operation in 2D. As in OpenSCAD, the first non-empty child sets the dimension and
+/// children of the other dimension are ignored with a warning.
+fn group(
+    stmt: &Stmt,
+    children: Vec<Geom>,
+    op: fn(usize) -> Op2,
+    ctx: &mut Ctx,
+) -> Result<Geom, CsgError> {
     let mut solids = Vec::new();
     let mut flats = Vec::new();
+    let mut ignored = false;
     for (k, c) in children.into_iter().enumerate() {
         match c {
             Geom::Empty if k == 0 && matches!(op(0), Op2::Difference(_)) => return Ok(Geom::Empty),
             Geom::Empty if matches!(op(0), Op2::Intersection(_)) => return Ok(Geom::Empty),
             Geom::Empty => {}
+            Geom::Solid(_) if !flats.is_empty() => ignored = true,
+            Geom::Flat(_) if !solids.is_empty() => ignored = true,
             Geom::Solid(s) => solids.push(s),
             Geom::Flat(f) => flats.push(f),
         }
     }
-    if !solids.is_empty() && !flats.is_empty() {
-        return Err(stmt.error("mixes 2D and 3D children"));
+    if ignored {
+        let (kept, dropped) = if solids.is_empty() {
+            ("2D", "3D")
+        } else {
+            ("3D", "2D")
+        };
+        ctx.warn(
+            stmt,
+            format!(
+                "mixing 2D and 3D objects is not supported: the first child is {kept}, \
+                 the {dropped} children are ignored"
+            ),
+        );
     }
     if !flats.is_empty() {
         return Ok(Geom::Flat(Flat::combine(flats, op)));
@@ -99,9 +195,59 @@ fn group(stmt: &Stmt, children: Vec<Geom>, op: fn(usize) -> Op2) -> Result<Geom,
     }))
 }
 
+/// The union of the 2D children of an extrusion: 3D children are ignored with a warning (as
+/// OpenSCAD does); `None` when nothing 2D is left.
+fn flat_children(stmt: &Stmt, children: Vec<Geom>, ctx: &mut Ctx) -> Option<Flat> {
+    let mut flats = Vec::new();
+    let mut ignored = false;
+    for c in children {
+        match c {
+            Geom::Flat(f) => flats.push(f),
+            Geom::Solid(_) => ignored = true,
+            Geom::Empty => {}
+        }
+    }
+    if ignored {
+        ctx.warn(stmt, "ignoring 3D child object for 2D operation");
+    }
+    (!flats.is_empty()).then(|| Flat::combine(flats, Op2::Union))
+}
+
+/// Whether any argument other than `$fn`, `$fa`, `$fs` holds `inf` or `nan` (at any depth).
+fn non_finite(stmt: &Stmt) -> bool {
+    let mut stack: Vec<&Value> = stmt
+        .args
+        .iter()
+        .filter(|a| !a.name.as_deref().is_some_and(|n| n.starts_with('$')))
+        .map(|a| &a.value)
+        .collect();
+    while let Some(v) = stack.pop() {
+        match v {
+            Value::Num(n) if !n.is_finite() => return true,
+            Value::Vector(items) => stack.extend(items),
+            _ => {}
+        }
+    }
+    false
+}
+
 /// One statement from its children's geometry.
-fn node(stmt: &Stmt, children: Vec<Geom>, facets: Facets) -> Result<Geom, CsgError> {
+fn node(stmt: &Stmt, children: Vec<Geom>, facets: Facets, ctx: &mut Ctx) -> Result<Geom, CsgError> {
     let faceted = facets == Facets::OpenScad;
+    let primitive = matches!(
+        stmt.name.as_str(),
+        "sphere" | "cube" | "cylinder" | "polyhedron" | "circle" | "square" | "polygon"
+    );
+    if primitive && non_finite(stmt) {
+        ctx.warn(stmt, "a size or point is inf or nan: the object is skipped");
+        return Ok(Geom::Empty);
+    }
+    if matches!(stmt.name.as_str(), "polyhedron" | "polygon")
+        && stmt.arg("points", Some(0)).is_none()
+    {
+        ctx.warn(stmt, "'points' is undef: the object is skipped");
+        return Ok(Geom::Empty);
+    }
     let leaf = |what: Geom| {
         if stmt.children.is_empty() {
             Ok(what)
@@ -110,12 +256,19 @@ fn node(stmt: &Stmt, children: Vec<Geom>, facets: Facets) -> Result<Geom, CsgErr
         }
     };
     match stmt.name.as_str() {
-        "group" | "union" | "color" | "render" => group(stmt, children, Op2::Union),
-        "difference" => group(stmt, children, Op2::Difference),
-        "intersection" => group(stmt, children, Op2::Intersection),
+        "group" | "union" | "color" | "render" => group(stmt, children, Op2::Union, ctx),
+        "difference" => group(stmt, children, Op2::Difference, ctx),
+        "intersection" => group(stmt, children, Op2::Intersection, ctx),
         "multmatrix" => {
+            if non_finite(stmt) {
+                ctx.warn(
+                    stmt,
+                    "the transformation matrix contains nan or inf: the object is removed",
+                );
+                return Ok(Geom::Empty);
+            }
             let m = matrix(stmt)?;
-            Ok(match group(stmt, children, Op2::Union)? {
+            Ok(match group(stmt, children, Op2::Union, ctx)? {
                 Geom::Solid(s) if is_identity(&m) => Geom::Solid(s),
                 Geom::Solid(s) => Geom::Solid(s.affine(m)),
                 Geom::Flat(mut f) => {
@@ -219,8 +372,8 @@ fn node(stmt: &Stmt, children: Vec<Geom>, facets: Facets) -> Result<Geom, CsgErr
             leaf(Geom::Flat(Flat::leaf(Leaf2::Polygon(loops))))
         }
         "linear_extrude" => {
-            let Geom::Flat(flat) = group(stmt, children, Op2::Union)? else {
-                return Err(stmt.error("expects 2D children"));
+            let Some(flat) = flat_children(stmt, children, ctx) else {
+                return Ok(Geom::Empty);
             };
             let h = stmt.num("height", Some(0), 100.0)?;
             let twist = stmt.num("twist", None, 0.0)?;
@@ -236,8 +389,8 @@ fn node(stmt: &Stmt, children: Vec<Geom>, facets: Facets) -> Result<Geom, CsgErr
             }))
         }
         "rotate_extrude" => {
-            let Geom::Flat(flat) = group(stmt, children, Op2::Union)? else {
-                return Err(stmt.error("expects 2D children"));
+            let Some(flat) = flat_children(stmt, children, ctx) else {
+                return Ok(Geom::Empty);
             };
             let angle = stmt.num("angle", None, 360.0)?;
             let s = sweep(stmt, &flat, faceted, |p| {
@@ -360,106 +513,449 @@ fn is_identity(m: &[[f64; 4]; 3]) -> bool {
     (0..3).all(|i| (0..4).all(|j| m[i][j] == if i == j { 1.0 } else { 0.0 }))
 }
 
-/// `hull()`: the convex hull of the children's points (round primitives always faceted the
-/// OpenSCAD way), gathered over an explicit work list under the accumulated transforms.
-fn hull(tree: &Tree, index: usize) -> Result<Geom, CsgError> {
-    let stmt = &tree.nodes[index];
-    let mut points = Vec::new();
-    let mut dims = Vec::new();
-    let mut work: Vec<(usize, [[f64; 4]; 3])> = stmt
-        .children
-        .iter()
-        .map(|&c| {
-            (
-                c,
-                [
-                    [1.0, 0.0, 0.0, 0.0],
-                    [0.0, 1.0, 0.0, 0.0],
-                    [0.0, 0.0, 1.0, 0.0],
-                ],
-            )
+/// Cells along the longest side of the grid on which `hull()` and `minkowski()` mesh an operand
+/// whose points are not known exactly (a `difference`, an extrusion, …).
+const OPERAND_RESOLUTION: usize = 128;
+
+/// What `hull()` / `minkowski()` know about a statement under them, from its own arguments or its
+/// children's; `None` when only its geometry can tell (then it is meshed).
+fn hullable_of(
+    stmt: &Stmt,
+    geom: &Geom,
+    infos: Vec<Option<Hullable>>,
+) -> Result<Option<Hullable>, CsgError> {
+    let convex = |points| {
+        Some(Hullable {
+            points,
+            convex: true,
         })
-        .collect();
-    while let Some((i, m)) = work.pop() {
-        let s = &tree.nodes[i];
-        let apply = |p: DVec3| {
-            DVec3::from_array(
-                [0, 1, 2].map(|r| m[r][0] * p.x + m[r][1] * p.y + m[r][2] * p.z + m[r][3]),
-            )
-        };
-        let mut local: Vec<DVec3> = Vec::new();
-        match s.name.as_str() {
-            "group" | "union" | "color" | "render" | "hull" => {
-                work.extend(s.children.iter().map(|&c| (c, m)));
-            }
-            "multmatrix" => {
-                let a = matrix(s)?;
-                let mut prod = [[0.0; 4]; 3];
-                for (r, row) in prod.iter_mut().enumerate() {
-                    for (c, x) in row.iter_mut().enumerate() {
-                        *x = (0..3).map(|k| m[r][k] * a[k][c]).sum::<f64>()
-                            + if c == 3 { m[r][3] } else { 0.0 };
-                    }
+    };
+    if matches!(geom, Geom::Empty) {
+        return Ok(convex(Vec::new()));
+    }
+    Ok(match stmt.name.as_str() {
+        "sphere" | "cylinder" | "cube" => convex(primitive_points(stmt)?),
+        "circle" | "square" => convex(flat_points(geom).unwrap_or_default()),
+        "polygon" => {
+            let Geom::Flat(f) = geom else { return Ok(None) };
+            let points = flat_points(geom).unwrap_or_default();
+            let ring: Vec<DVec2> = points.iter().map(|p| p.truncate()).collect();
+            let single = matches!(&f.0[..], [Op2::Leaf(Leaf2::Polygon(loops))] if loops.len() == 1);
+            let hull_area = area2(&convex_hull_2d(&ring)).abs();
+            let is_convex = single && (area2(&ring).abs() - hull_area).abs() <= 1e-9 * hull_area;
+            Some(Hullable {
+                points,
+                convex: is_convex,
+            })
+        }
+        "polyhedron" => {
+            let points = stmt.points("points", Some(0), 3)?;
+            let volume = polyhedron_volume(stmt, &points)?;
+            let hull_volume = convex_hull(&points)
+                .and_then(|(v, f)| Polyhedron::new(v, f).ok())
+                .map(|p| p.volume());
+            let is_convex = matches!((volume, hull_volume), (Some(a), Some(b)) if (a - b).abs() <= 1e-9 * b.abs());
+            Some(Hullable {
+                points,
+                convex: is_convex,
+            })
+        }
+        "group" | "union" | "color" | "render" | "multmatrix" => {
+            let Some(infos) = infos.into_iter().collect::<Option<Vec<Hullable>>>() else {
+                return Ok(None);
+            };
+            let non_empty: Vec<&Hullable> = infos.iter().filter(|h| !h.points.is_empty()).collect();
+            let is_convex = non_empty.len() == 1 && non_empty[0].convex;
+            let mut points: Vec<DVec3> = infos
+                .iter()
+                .flat_map(|h| h.points.iter().copied())
+                .collect();
+            if stmt.name == "multmatrix" {
+                let m = matrix(stmt)?;
+                for p in &mut points {
+                    *p = apply(&m, *p);
                 }
-                work.extend(s.children.iter().map(|&c| (c, prod)));
             }
-            "sphere" | "cylinder" | "cube" | "polyhedron" => {
-                dims.push((s.pos, 3));
-                local = primitive_points(s)?;
-            }
-            "circle" | "square" | "polygon" => {
-                dims.push((s.pos, 2));
-                local = flat_points(s)?.into_iter().map(|p| p.extend(0.0)).collect();
-            }
-            other => {
-                return Err(CsgError::Unsupported {
-                    pos: s.pos,
-                    name: format!("{other}' inside 'hull"),
-                });
-            }
+            Some(Hullable {
+                points,
+                convex: is_convex,
+            })
         }
-        points.extend(local.into_iter().map(apply));
-    }
-    if points.is_empty() {
-        return Ok(Geom::Empty);
-    }
-    if let Some(&(pos, _)) = dims.iter().find(|d| d.1 != dims[0].1) {
-        return Err(CsgError::argument(pos, "hull", "mixes 2D and 3D children"));
-    }
-    if dims[0].1 == 2 {
-        let flat: Vec<DVec2> = points.iter().map(|p| p.truncate()).collect();
-        let ring = convex_hull_2d(&flat);
-        if ring.len() < 3 {
-            return Err(stmt.error("the points span no area"));
-        }
-        return Ok(Geom::Flat(Flat::leaf(Leaf2::Polygon(vec![ring]))));
-    }
-    let (v, f) = convex_hull(&points).ok_or_else(|| stmt.error("the points span no volume"))?;
-    Ok(Geom::Solid(polyhedron(stmt, v, f)?))
+        _ => None,
+    })
 }
 
-/// The points of a 2D primitive (circles faceted the OpenSCAD way), for `hull()`.
-fn flat_points(stmt: &Stmt) -> Result<Vec<DVec2>, CsgError> {
-    let Geom::Flat(f) = node(stmt, Vec::new(), Facets::OpenScad)? else {
-        return Ok(Vec::new());
+/// The volume of a `polyhedron` statement (faces fanned; orientation ignored).
+fn polyhedron_volume(stmt: &Stmt, points: &[DVec3]) -> Result<Option<f64>, CsgError> {
+    let faces = match stmt.index_lists("faces", Some(1))? {
+        Some(f) => f,
+        None => match stmt.index_lists("triangles", None)? {
+            Some(f) => f,
+            None => return Ok(None),
+        },
     };
+    let mut six = 0.0;
+    for f in &faces {
+        let Some(p) = f
+            .iter()
+            .map(|&k| points.get(k as usize).copied())
+            .collect::<Option<Vec<DVec3>>>()
+        else {
+            return Ok(None);
+        };
+        for k in 1..p.len().saturating_sub(1) {
+            six += p[0].dot(p[k].cross(p[k + 1]));
+        }
+    }
+    Ok(Some(six.abs() / 6.0))
+}
+
+/// `m·p` for a 3 × 4 affine matrix.
+fn apply(m: &[[f64; 4]; 3], p: DVec3) -> DVec3 {
+    DVec3::from_array([0, 1, 2].map(|r| m[r][0] * p.x + m[r][1] * p.y + m[r][2] * p.z + m[r][3]))
+}
+
+/// Signed area of a loop (shoelace).
+fn area2(l: &[DVec2]) -> f64 {
+    (0..l.len())
+        .map(|i| l[i].perp_dot(l[(i + 1) % l.len()]))
+        .sum::<f64>()
+        / 2.0
+}
+
+/// The points of a 2D region made of leaves and unions only (circles faceted the OpenSCAD way),
+/// at z = 0; `None` when it has a difference or intersection.
+fn flat_points(geom: &Geom) -> Option<Vec<DVec3>> {
+    let Geom::Flat(f) = geom else { return None };
     let mut out = Vec::new();
-    for op in f.0 {
+    for op in &f.0 {
         match op {
             Op2::Leaf(Leaf2::Circle {
                 center,
                 radius,
                 res,
             }) => out.extend(
-                facets::circle(radius, facets::fragments(radius, res))
+                facets::circle(*radius, facets::fragments(*radius, *res))
                     .into_iter()
-                    .map(|p| p + center),
+                    .map(|p| (p + *center).extend(0.0)),
             ),
-            Op2::Leaf(Leaf2::Polygon(loops)) => out.extend(loops.into_iter().flatten()),
-            _ => {}
+            Op2::Leaf(Leaf2::Polygon(loops)) => {
+                out.extend(loops.iter().flatten().map(|p| p.extend(0.0)))
+            }
+            Op2::Union(_) => {}
+            Op2::Difference(_) | Op2::Intersection(_) => return None,
         }
     }
-    Ok(out)
+    Some(out)
+}
+
+/// Points whose convex hull is the hull of `geom`, when they are not known exactly: the vertices
+/// of its marching-cubes mesh ([`OPERAND_RESOLUTION`] cells along the longest side; 2D regions
+/// are extruded to a unit slab, meshed and flattened).
+fn geometry_points(stmt: &Stmt, geom: &Geom) -> Result<Vec<DVec3>, CsgError> {
+    if let Some(points) = flat_points(geom) {
+        return Ok(points);
+    }
+    let points = meshed_points(stmt, geom)?;
+    if points.is_empty() {
+        return Ok(points);
+    }
+    // Reduce to the vertices of their hull, within a fraction of a cell.
+    let (lo, hi) = points.iter().fold(
+        (DVec3::splat(f64::INFINITY), DVec3::splat(f64::NEG_INFINITY)),
+        |(lo, hi), p| (lo.min(*p), hi.max(*p)),
+    );
+    let cell = (hi - lo).max_element() / OPERAND_RESOLUTION as f64;
+    if matches!(geom, Geom::Flat(_)) {
+        return Ok(points);
+    }
+    let eps = OPERAND_HULL_CELLS * cell;
+    // Akl–Toussaint: the hull of the extreme points along a few hundred directions, and only
+    // the points outside it, go to the incremental hull (whose cost grows with points × faces).
+    let n = 256;
+    let mut extreme: Vec<DVec3> = (0..n)
+        .map(|k| {
+            let z = 1.0 - (2 * k + 1) as f64 / n as f64;
+            let phi = k as f64 * std::f64::consts::PI * (3.0 - 5f64.sqrt());
+            let r = (1.0 - z * z).sqrt();
+            let d = DVec3::new(r * phi.cos(), r * phi.sin(), z);
+            points
+                .iter()
+                .copied()
+                .max_by(|a, b| d.dot(*a).total_cmp(&d.dot(*b)))
+                .expect("points")
+        })
+        .collect();
+    let Some((v, f)) = convex_hull_within(&extreme, eps) else {
+        return Ok(points);
+    };
+    let planes: Vec<(DVec3, f64)> = f
+        .iter()
+        .map(|t| {
+            let [a, b, c] = [0, 1, 2].map(|i| v[t[i] as usize]);
+            let n = (b - a).cross(c - a).normalize_or_zero();
+            (n, n.dot(a))
+        })
+        .collect();
+    extreme.extend(
+        points
+            .iter()
+            .filter(|p| planes.iter().any(|(n, d)| n.dot(**p) - d > eps)),
+    );
+    Ok(match convex_hull_within(&extreme, eps) {
+        Some((v, _)) => v,
+        None => points,
+    })
+}
+
+/// The vertices of a marching-cubes mesh of `geom` (2D regions extruded to a unit slab and
+/// flattened).
+fn meshed_points(stmt: &Stmt, geom: &Geom) -> Result<Vec<DVec3>, CsgError> {
+    let (solid, flatten) = match geom {
+        Geom::Empty => return Ok(Vec::new()),
+        Geom::Solid(s) => (s.clone(), false),
+        Geom::Flat(f) => (
+            sweep(stmt, f, true, |p| {
+                Extrude::new(p, 1.0, 0.0, 1.0).map(|e| Primitive::Extrude(Arc::new(e)))
+            })?,
+            true,
+        ),
+    };
+    solid.validate().map_err(|e| stmt.error(e.to_string()))?;
+    let bounds = solid.bbox();
+    if bounds.is_empty() {
+        return Ok(Vec::new());
+    }
+    let spec = GridSpec::for_bounds(&bounds, OPERAND_RESOLUTION)
+        .map_err(|e| stmt.error(format!("meshing an operand: {e}")))?;
+    let (mesh, _) = mesh_sparse(&solid.compile(), spec, &SparseOptions::default())
+        .map_err(|e| stmt.error(format!("meshing an operand: {e}")))?;
+    let mut points = mesh.positions;
+    if flatten {
+        for p in &mut points {
+            p.z = 0.0;
+        }
+    }
+    Ok(points)
+}
+
+/// An operand of `hull()` / `minkowski()`: its geometry, points, and index among the kept
+/// children.
+type Operand = (Geom, Hullable, usize);
+
+/// The non-empty operands of `hull()` / `minkowski()` with their points (known or meshed), all
+/// of the first operand's dimension (others are ignored with a warning, as OpenSCAD does).
+fn operands(
+    stmt: &Stmt,
+    children: Vec<Geom>,
+    infos: Vec<Option<Hullable>>,
+    ctx: &mut Ctx,
+) -> Result<(Option<u8>, Vec<Operand>), CsgError> {
+    let mut dim = None;
+    let mut ignored = false;
+    let mut out = Vec::new();
+    for (k, (g, info)) in children.into_iter().zip(infos).enumerate() {
+        let d = match &g {
+            Geom::Empty => continue,
+            Geom::Solid(_) => 3,
+            Geom::Flat(_) => 2,
+        };
+        if dim.is_some_and(|x| x != d) {
+            ignored = true;
+            continue;
+        }
+        dim = Some(d);
+        let info = match info {
+            Some(h) => h,
+            None => Hullable {
+                points: geometry_points(stmt, &g)?,
+                convex: false,
+            },
+        };
+        out.push((g, info, k));
+    }
+    if ignored {
+        ctx.warn(
+            stmt,
+            "mixing 2D and 3D objects is not supported: the children of the other dimension than the first are ignored",
+        );
+    }
+    Ok((dim, out))
+}
+
+/// The convex hull of `points` as geometry of dimension `dim` (empty when degenerate), with its
+/// vertices.
+fn hull_of(stmt: &Stmt, dim: u8, points: &[DVec3]) -> Result<(Geom, Option<Hullable>), CsgError> {
+    if dim == 2 {
+        let flat: Vec<DVec2> = points.iter().map(|p| p.truncate()).collect();
+        let ring = convex_hull_2d(&flat);
+        if ring.len() < 3 {
+            return Ok((Geom::Empty, None));
+        }
+        let points = ring.iter().map(|p| p.extend(0.0)).collect();
+        return Ok((
+            Geom::Flat(Flat::leaf(Leaf2::Polygon(vec![ring]))),
+            Some(Hullable {
+                points,
+                convex: true,
+            }),
+        ));
+    }
+    let Some((v, f)) = convex_hull(points) else {
+        return Ok((Geom::Empty, None));
+    };
+    let info = Hullable {
+        points: v.clone(),
+        convex: true,
+    };
+    Ok((Geom::Solid(polyhedron(stmt, v, f)?), Some(info)))
+}
+
+/// `hull()` of any children: the convex hull of their points (exact for primitives, polyhedra,
+/// polygons and their unions and transforms; the vertices of a fine mesh otherwise).
+fn hull(
+    stmt: &Stmt,
+    children: Vec<Geom>,
+    infos: Vec<Option<Hullable>>,
+    ctx: &mut Ctx,
+) -> Result<(Geom, Option<Hullable>), CsgError> {
+    let (dim, ops) = operands(stmt, children, infos, ctx)?;
+    let Some(dim) = dim else {
+        return Ok((Geom::Empty, None));
+    };
+    let points: Vec<DVec3> = ops.into_iter().flat_map(|(_, h, _)| h.points).collect();
+    hull_of(stmt, dim, &points)
+}
+
+/// The radius and centre of a sphere operand of `minkowski()`: a `sphere` under groups and
+/// translations only.
+fn sphere_operand(tree: &Tree, mut k: usize) -> Result<Option<(f64, DVec3)>, CsgError> {
+    let mut t = DVec3::ZERO;
+    loop {
+        let s = &tree.nodes[k];
+        let kids: Vec<usize> = s
+            .children
+            .iter()
+            .copied()
+            .filter(|&c| !tree.nodes[c].modifiers.dropped())
+            .collect();
+        match s.name.as_str() {
+            "sphere" => {
+                let r = radius(s, "r", "d", 0, 1.0)?;
+                return Ok((r > 0.0).then_some((r, t)));
+            }
+            "group" | "union" | "color" | "render" if kids.len() == 1 => k = kids[0],
+            "multmatrix" if kids.len() == 1 => {
+                let m = matrix(s)?;
+                if (0..3).any(|i| (0..3).any(|j| m[i][j] != if i == j { 1.0 } else { 0.0 })) {
+                    return Ok(None);
+                }
+                t += DVec3::new(m[0][3], m[1][3], m[2][3]);
+                k = kids[0];
+            }
+            _ => return Ok(None),
+        }
+    }
+}
+
+/// `minkowski()`: of convex operands, the hull of the sums of their points (exact: the sum of
+/// convex sets is the hull of the sums of their vertices); with a sphere operand and exact
+/// facets, or with one non-convex operand and a sphere, an offset of the other operand by the
+/// sphere's radius. Anything else is refused.
+fn minkowski(
+    tree: &Tree,
+    kids: &[usize],
+    stmt: &Stmt,
+    children: Vec<Geom>,
+    infos: Vec<Option<Hullable>>,
+    ctx: &mut Ctx,
+) -> Result<(Geom, Option<Hullable>), CsgError> {
+    let (dim, mut ops) = operands(stmt, children, infos, ctx)?;
+    let Some(dim) = dim else {
+        return Ok((Geom::Empty, None));
+    };
+    if ops.len() == 1 {
+        let (g, h, _) = ops.pop().expect("one operand");
+        return Ok((g, Some(h)));
+    }
+    let all_convex = ops.iter().all(|(_, h, _)| h.convex);
+    let mut spheres = Vec::new();
+    if dim == 3 && (ctx.facets == Facets::Exact || !all_convex) {
+        for (n, (_, _, k)) in ops.iter().enumerate() {
+            if let Some(s) = sphere_operand(tree, kids[*k])? {
+                spheres.push((n, s));
+            }
+        }
+    }
+    if spheres.is_empty() || spheres.len() == ops.len() {
+        if !all_convex {
+            return Err(stmt.error(
+                "only convex operands (primitives, convex polyhedra and polygons, hulls, and \
+                 their transforms), or a sphere with any other operand, are supported",
+            ));
+        }
+        let sum = minkowski_points(dim, ops.into_iter().map(|(_, h, _)| h.points));
+        return hull_of(stmt, dim, &sum);
+    }
+    // Offset the rest by the spheres (their sum is one sphere).
+    let (r, t) = spheres
+        .iter()
+        .fold((0.0, DVec3::ZERO), |(r, t), (_, (sr, st))| {
+            (r + sr, t + *st)
+        });
+    for (n, _) in spheres.iter().rev() {
+        ops.remove(*n);
+    }
+    let rest = if ops.len() == 1 {
+        ops.pop().expect("one operand").0
+    } else if ops.iter().all(|(_, h, _)| h.convex) {
+        let sum = minkowski_points(dim, ops.into_iter().map(|(_, h, _)| h.points));
+        hull_of(stmt, dim, &sum)?.0
+    } else {
+        return Err(
+            stmt.error("more than one non-convex operand besides the sphere is not supported")
+        );
+    };
+    let Geom::Solid(s) = rest else {
+        return Ok((Geom::Empty, None));
+    };
+    if ctx.facets == Facets::OpenScad {
+        ctx.warn(
+            stmt,
+            "minkowski with a non-convex operand: the sphere operand is taken as exact (an offset)",
+        );
+    }
+    let s = s.offset(r);
+    Ok((
+        Geom::Solid(if t == DVec3::ZERO { s } else { s.translate(t) }),
+        None,
+    ))
+}
+
+/// The vertices of the Minkowski sum of the convex hulls of `sets` (reduced to hull vertices
+/// after each step).
+fn minkowski_points(dim: u8, sets: impl Iterator<Item = Vec<DVec3>>) -> Vec<DVec3> {
+    let reduce = |p: Vec<DVec3>| -> Vec<DVec3> {
+        if dim == 2 {
+            let flat: Vec<DVec2> = p.iter().map(|q| q.truncate()).collect();
+            let ring = convex_hull_2d(&flat);
+            return ring.into_iter().map(|q| q.extend(0.0)).collect();
+        }
+        match convex_hull(&p) {
+            Some((v, _)) => v,
+            None => p,
+        }
+    };
+    let mut acc = vec![DVec3::ZERO];
+    for set in sets {
+        let set = reduce(set);
+        let sum = acc
+            .iter()
+            .flat_map(|a| set.iter().map(move |b| *a + *b))
+            .collect();
+        acc = reduce(sum);
+    }
+    acc
 }
 
 /// The vertices of a primitive, round ones faceted the OpenSCAD way.
@@ -476,7 +972,7 @@ fn primitive_points(stmt: &Stmt) -> Result<Vec<DVec3>, CsgError> {
             Some((r1, r2, z0, h)) => facets::cylinder(r1, r2, z0, z0 + h, stmt.resolution()?).0,
             None => Vec::new(),
         },
-        "cube" => {
+        _ => {
             let size = stmt.size3("size", Some(0), 1.0)?;
             let o = if stmt.flag("center", Some(1), false)? {
                 -size / 2.0
@@ -490,6 +986,5 @@ fn primitive_points(stmt: &Stmt) -> Result<Vec<DVec3>, CsgError> {
                 })
                 .collect()
         }
-        _ => stmt.points("points", Some(0), 3)?,
     })
 }

@@ -70,3 +70,19 @@ impl CsgError {
         }
     }
 }
+
+/// A part of the model that OpenSCAD warns about, skips and renders the rest without; the
+/// importer does the same. Displayed as `line:col: problem`.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Warning {
+    /// Where the statement starts.
+    pub pos: Pos,
+    /// What was skipped and why.
+    pub message: String,
+}
+
+impl std::fmt::Display for Warning {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(f, "{}: {}", self.pos, self.message)
+    }
+}

@@ -63,7 +63,13 @@ pub fn convex_hull(points: &[DVec3]) -> Option<(Vec<DVec3>, Vec<Vec<u32>>)> {
     let size = points
         .iter()
         .fold(0.0f64, |m, p| m.max(p.abs().max_element()));
-    let eps = 1e-10 * size.max(1e-300);
+    convex_hull_within(points, 1e-10 * size.max(1e-300))
+}
+
+/// The hull of `points`, a point within `eps` of the current hull counting as inside (so the
+/// result may miss points by up to `eps`: for approximate points, such as mesh vertices, a
+/// larger `eps` gives far fewer faces).
+pub fn convex_hull_within(points: &[DVec3], eps: f64) -> Option<(Vec<DVec3>, Vec<Vec<u32>>)> {
     let far = |from: &dyn Fn(DVec3) -> f64| {
         (0..points.len()).max_by(|&a, &b| from(points[a]).total_cmp(&from(points[b])))
     };

@@ -6,13 +6,13 @@ use super::error::{CsgError, Pos};
 /// A token's kind and payload.
 #[derive(Debug, Clone, PartialEq)]
 pub enum Tok {
-    /// An identifier or keyword (`group`, `$fn`, `true`, `undef`).
+    /// An identifier or keyword (`group`, `$fn`, `true`, `undef`, `inf`, `nan`).
     Ident(String),
     /// A number literal (unsigned; signs are separate tokens).
     Num(f64),
     /// A string literal, unescaped.
     Str(String),
-    /// One of `( ) { } [ ] , ; = - + :`.
+    /// One of `( ) { } [ ] , ; = - + :` or a modifier character `% # ! *`.
     Punct(char),
 }
 
@@ -130,7 +130,7 @@ pub fn tokenize(text: &str) -> Result<Vec<Token>, CsgError> {
                 tok: Tok::Str(s),
                 pos,
             });
-        } else if "(){}[],;=-+:".contains(c) {
+        } else if "(){}[],;=-+:%#!*".contains(c) {
             out.push(Token {
                 tok: Tok::Punct(c),
                 pos,

@@ -1,18 +1,32 @@
 //! OpenSCAD `.csg` import: the flattened tree OpenSCAD writes with `openscad -o model.csg
 //! model.scad` (`group`, `union`, `difference`, `intersection`, `multmatrix`, `sphere`, `cube`,
 //! `cylinder`, `polyhedron`, `circle`, `square`, `polygon`, `linear_extrude`, `rotate_extrude`,
-//! `color`, `render`, `hull`) to a [`Solid`].
+//! `color`, `render`, `hull`, `minkowski`) to a [`Solid`].
 //!
 //! Pipeline: [`lexer`] (tokens with line/column) → [`parser`] (an arena of statements, explicit
 //! stacks, so any nesting depth is safe) → `convert` (post-order over a work list).
 //!
+//! OpenSCAD's semantics: the modifiers `%` (background) and `*` (disabled) leave their subtree
+//! out of the geometry, `#` (highlight) keeps it, the first `!` (root) is the whole model.
+//! `inf`, `nan` (also signed) and `undef` are values. Where OpenSCAD warns, skips a part and
+//! renders the rest, so does the importer, returning a [`Warning`] per skipped part
+//! ([`import_with_warnings`]): a non-finite size or point, a non-finite matrix,
+//! `polyhedron`/`polygon` without points, 3D children of an extrusion (an extrusion with nothing
+//! 2D is empty), children of the other dimension than a group's first non-empty child.
+//!
 //! Round primitives are exact by default ([`Facets::Exact`]: a true sphere, cylinder, cone, disc);
 //! [`Facets::OpenScad`] builds them as OpenSCAD's polyhedra and polygons (its `$fn/$fa/$fs`
-//! fragment rule). `hull()` always hulls the OpenSCAD-faceted versions of its children (a hull of
-//! exact round solids is not a polyhedron). Extrusions are exact sweeps of the profile (OpenSCAD's
-//! `slices` is ignored), and 2D Booleans under an extrusion are replayed as 3D Booleans of the
-//! swept leaves. Unsupported constructs (`minkowski`, `offset`, `import`, `surface`, `text`,
-//! `projection`, unknown modules) are errors naming the construct and its line.
+//! fragment rule). Everything under `hull()` and `minkowski()` is built the OpenSCAD-faceted way.
+//! `hull()` takes the convex hull of its children's points: exact for primitives, polyhedra,
+//! polygons and their unions and transforms, the vertices of a fine marching-cubes mesh of the
+//! operand otherwise (a difference, an extrusion). `minkowski()` of convex operands is the hull of
+//! the sums of their vertices (exact); with a sphere operand (under translations) and exact facets,
+//! or when another operand is not convex, it is that operand offset by the sphere's radius (exact
+//! where the operand's field is a true distance); two non-convex operands are refused.
+//! Extrusions are exact sweeps of the profile (OpenSCAD's `slices` is ignored; `scale = 0` is a
+//! cone to the apex), and 2D Booleans under an extrusion are replayed as 3D Booleans of the swept
+//! leaves. Unsupported constructs (`offset`, `import`, `surface`, `text`, `projection`,
+//! `resize`, unknown modules) are errors naming the construct and its line.
 
 pub mod args;
 mod convert;
@@ -28,7 +42,7 @@ mod fuzz;
 #[cfg(test)]
 mod tests;
 
-pub use error::CsgError;
+pub use error::{CsgError, Warning};
 
 use solidkit_kernel::Solid;
 
@@ -42,8 +56,17 @@ pub enum Facets {
     OpenScad,
 }
 
-/// Imports `.csg` text as a solid (not yet validated; see [`Solid::validate`]).
+/// Imports `.csg` text as a solid (not yet validated; see [`Solid::validate`]); warnings are
+/// dropped (see [`import_with_warnings`]). Used by the tests.
+#[cfg(test)]
 pub fn import(text: &str, facets: Facets) -> Result<Solid, CsgError> {
+    import_with_warnings(text, facets).map(|(s, _)| s)
+}
+
+/// Imports `.csg` text as a solid (not yet validated), with a warning for each part skipped
+/// the way OpenSCAD skips it (a non-finite size, `points = undef`, 3D children of an extrusion,
+/// 2D and 3D children mixed in one group, …).
+pub fn import_with_warnings(text: &str, facets: Facets) -> Result<(Solid, Vec<Warning>), CsgError> {
     let tree = parser::parse(text)?;
     convert::convert(&tree, facets)
 }

@@ -34,8 +34,28 @@ pub struct Arg {
     pub pos: Pos,
 }
 
+/// The modifier characters OpenSCAD writes before a statement (`%cube(1);`).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub struct Modifiers {
+    /// `%`: background, drawn transparently, not part of the geometry.
+    pub background: bool,
+    /// `#`: highlighted, still part of the geometry.
+    pub highlight: bool,
+    /// `!`: root; only this subtree is the model.
+    pub root: bool,
+    /// `*`: disabled, not part of the geometry.
+    pub disable: bool,
+}
+
+impl Modifiers {
+    /// Whether the statement is left out of the geometry (`%` or `*`).
+    pub fn dropped(&self) -> bool {
+        self.background || self.disable
+    }
+}
+
 /// A module instantiation `name(args) { children }` (or `name(args);`).
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone, PartialEq, Default)]
 pub struct Stmt {
     /// The module's name.
     pub name: String,
@@ -45,6 +65,8 @@ pub struct Stmt {
     pub args: Vec<Arg>,
     /// Indices of the children in [`Tree::nodes`].
     pub children: Vec<usize>,
+    /// The modifiers written before the name.
+    pub modifiers: Modifiers,
 }
 
 /// The statements of a file: an arena and the top-level statements.
@@ -129,6 +151,7 @@ impl Parser {
 
     fn statements(mut self) -> Result<Tree, CsgError> {
         let mut tree = Tree::default();
+        let mut modifiers = Modifiers::default();
         let mut frames = vec![Frame {
             parent: None,
             braced: true,
@@ -158,6 +181,32 @@ impl Parser {
                     frames.pop();
                     true
                 }
+                Tok::Punct(m @ ('%' | '#' | '!' | '*')) => {
+                    self.at += 1;
+                    let flag = match m {
+                        '%' => &mut modifiers.background,
+                        '#' => &mut modifiers.highlight,
+                        '!' => &mut modifiers.root,
+                        _ => &mut modifiers.disable,
+                    };
+                    *flag = true;
+                    if !matches!(
+                        self.peek(),
+                        Some(Token {
+                            tok: Tok::Ident(_),
+                            ..
+                        }) | Some(Token {
+                            tok: Tok::Punct('%' | '#' | '!' | '*'),
+                            ..
+                        })
+                    ) {
+                        return Err(CsgError::syntax(
+                            token.pos,
+                            format!("expected a module name after the modifier '{m}'"),
+                        ));
+                    }
+                    false
+                }
                 Tok::Punct(';') if frames.last().is_some_and(|f| f.braced) => {
                     self.at += 1;
                     false
@@ -171,6 +220,7 @@ impl Parser {
                         pos: token.pos,
                         args,
                         children: Vec::new(),
+                        modifiers: std::mem::take(&mut modifiers),
                     });
                     match frames.last().expect("root frame").parent {
                         Some(p) => tree.nodes[p].children.push(index),
@@ -276,6 +326,13 @@ impl Parser {
                     Token {
                         tok: Tok::Num(n), ..
                     } => Value::Num(if sign == '-' { -n } else { n }),
+                    Token {
+                        tok: Tok::Ident(ref id),
+                        ..
+                    } if special_number(id).is_some() => {
+                        let n = special_number(id).expect("checked");
+                        Value::Num(if sign == '-' { -n } else { n })
+                    }
                     other => {
                         return Err(CsgError::syntax(
                             other.pos,
@@ -291,6 +348,9 @@ impl Parser {
                 Tok::Ident(ref id) if id == "true" => Value::Bool(true),
                 Tok::Ident(ref id) if id == "false" => Value::Bool(false),
                 Tok::Ident(ref id) if id == "undef" => Value::Undef,
+                Tok::Ident(ref id) if special_number(id).is_some() => {
+                    Value::Num(special_number(id).expect("checked"))
+                }
                 other => {
                     return Err(CsgError::syntax(
                         t.pos,
@@ -324,6 +384,15 @@ impl Parser {
                 }
             }
         }
+    }
+}
+
+/// The numbers OpenSCAD writes as words: `inf` and `nan` (its exports also write `-inf`, `-nan`).
+fn special_number(id: &str) -> Option<f64> {
+    match id {
+        "inf" => Some(f64::INFINITY),
+        "nan" => Some(f64::NAN),
+        _ => None,
     }
 }
 

@@ -2,7 +2,7 @@
 //! `.csg` and JSON give the same tree, located errors, deep nesting, OpenSCAD faceting.
 
 use super::error::Pos;
-use super::{CsgError, Facets, import};
+use super::{CsgError, Facets, import, import_with_warnings};
 use solidkit_kernel::Solid;
 use solidkit_kernel::polyhedra::Polyhedron;
 use solidkit_kernel::primitive::sweep::signed_volume;
@@ -81,19 +81,220 @@ fn csg_equals_json_tree() {
 
 #[test]
 fn unsupported_construct_is_located() {
-    let text = std::fs::read_to_string(fixture("csg/minkowski.csg")).unwrap();
-    let e = import(&text, Facets::Exact).unwrap_err();
+    let text = "group() {\n\tcube(size = [1, 1, 1]);\n\n\ttext(text = \"a\");\n}\n";
+    let e = import(text, Facets::Exact).unwrap_err();
     assert_eq!(
         e,
         CsgError::Unsupported {
             pos: Pos { line: 4, col: 2 },
-            name: "minkowski".into()
+            name: "text".into()
         }
     );
-    assert_eq!(
-        e.to_string(),
-        "4:2: unsupported OpenSCAD construct 'minkowski'"
+    assert_eq!(e.to_string(), "4:2: unsupported OpenSCAD construct 'text'");
+}
+
+fn warned(text: &str, facets: Facets) -> (Solid, Vec<String>) {
+    let (s, w) = import_with_warnings(text, facets).unwrap_or_else(|e| panic!("{text}: {e}"));
+    s.validate().unwrap_or_else(|e| panic!("{text}: {e}"));
+    (s, w.iter().map(|w| w.to_string()).collect())
+}
+
+/// The same solid as `expected`, with no warnings.
+fn same(text: &str, expected: &str) {
+    let (a, w) = warned(text, Facets::Exact);
+    assert!(w.is_empty(), "{text}: {w:?}");
+    assert_eq!(a, warned(expected, Facets::Exact).0, "{text}");
+}
+
+/// The modifiers OpenSCAD writes into `.csg` exports: `%` (background) and `*` (disabled) leave
+/// the subtree out (also as the first operand of a difference, whose base is then the next
+/// child), `#` (highlight) keeps it, the first `!` (root) is the whole model.
+#[test]
+fn modifiers_follow_openscad() {
+    same(
+        "%cube(5);\n#cube(size = 1, center = true);",
+        "cube(size = 1, center = true);",
     );
+    same("*sphere(3); cube(1);", "cube(1);");
+    same(
+        "difference() { %cube(10); cube(2); sphere(0.5); }",
+        "difference() { cube(2); sphere(0.5); }",
+    );
+    same(
+        "group() { cube(7); multmatrix([[1,0,0,5],[0,1,0,0],[0,0,1,0],[0,0,0,1]]) !cube(2); }",
+        "cube(2);",
+    );
+    same("%#cube(5); cube(1);", "cube(1);");
+    let (s, w) = warned("!cube(1); !sphere(1);", Facets::Exact);
+    assert_eq!(
+        s,
+        Solid::cuboid(glam::DVec3::ONE).translate(glam::DVec3::splat(0.5))
+    );
+    assert_eq!(
+        w,
+        ["1:12: more than one root modifier (!): the first one is the model"]
+    );
+    match import("group() { % }", Facets::Exact) {
+        Err(CsgError::Syntax { pos, .. }) => assert_eq!(pos, Pos { line: 1, col: 11 }),
+        other => panic!("{other:?}"),
+    }
+}
+
+/// `inf`, `-inf`, `nan`, `-nan` and `undef` read wherever a value stands; objects OpenSCAD skips
+/// (non-finite sizes or points, a non-finite matrix, `polyhedron(points = undef)`) are skipped
+/// with a located warning and the rest is kept.
+#[test]
+fn non_finite_and_undef_values_are_skipped_with_warnings() {
+    let text = "cube(size = [inf, inf, inf], center = false);\n\
+                sphere($fn = 0, $fa = 12, $fs = 2, r = -nan);\n\
+                multmatrix([[1, 0, 0, -inf], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]) cube(3);\n\
+                polyhedron(points = undef, faces = [[0, 1, 2]], convexity = 1);\n\
+                polygon(points = [[0, 0], [1, nan], [1, 1]]);\n\
+                cube(size = 1, center = true);\n";
+    let (s, w) = warned(text, Facets::Exact);
+    assert_eq!(s, warned("cube(size = 1, center = true);", Facets::Exact).0);
+    assert_eq!(
+        w,
+        [
+            "1:1: a size or point is inf or nan: the object is skipped",
+            "2:1: a size or point is inf or nan: the object is skipped",
+            "3:1: the transformation matrix contains nan or inf: the object is removed",
+            "4:1: 'points' is undef: the object is skipped",
+            "5:1: a size or point is inf or nan: the object is skipped",
+        ]
+    );
+    // Everything skipped: the model is empty, an error.
+    assert!(matches!(
+        import("cube(size = inf);", Facets::Exact),
+        Err(CsgError::Empty)
+    ));
+}
+
+/// An empty extrusion is nothing; 3D children of an extrusion and children of the other
+/// dimension in a group are ignored with a warning, as OpenSCAD does.
+#[test]
+fn extrusions_and_groups_ignore_what_openscad_ignores() {
+    let extrude = "linear_extrude(height = 5, center = false, convexity = 1, scale = [1, 1]";
+    let (s, w) = warned(
+        &format!(
+            "{extrude});\nrotate_extrude(angle = 360);\n{extrude}) {{\n\tcube(size = [1, 1, 1]);\n\tsquare(size = [1, 1]);\n}}\n"
+        ),
+        Facets::Exact,
+    );
+    assert_eq!(
+        s,
+        warned(&format!("{extrude}) square(size = [1, 1]);"), Facets::Exact).0
+    );
+    assert_eq!(w, ["3:1: ignoring 3D child object for 2D operation"]);
+    let (s, w) = warned(
+        "group() {\n\tcube(size = [1, 1, 1]);\n\tsquare(size = [2, 2]);\n}",
+        Facets::Exact,
+    );
+    assert_eq!(s, warned("cube(size = [1, 1, 1]);", Facets::Exact).0);
+    assert_eq!(
+        w,
+        [
+            "1:1: mixing 2D and 3D objects is not supported: the first child is 3D, the 2D children are ignored"
+        ]
+    );
+    // A 2D first child makes the group 2D: the cube is ignored, the group extruded.
+    let (s, w) = warned(
+        &format!("{extrude}) group() {{ square(size = [2, 2]); cube(1); }}"),
+        Facets::Exact,
+    );
+    assert_eq!(
+        s,
+        warned(&format!("{extrude}) square(size = [2, 2]);"), Facets::Exact).0
+    );
+    assert_eq!(w.len(), 1, "{w:?}");
+}
+
+/// `linear_extrude(scale = 0)` is the cone to a point: a square pyramid of volume a²h/3, and a
+/// circle's cone of volume πr²h/3, both closed with one shell.
+#[test]
+fn zero_scale_extrusion_is_a_pyramid() {
+    for (text, volume) in [
+        (
+            "linear_extrude(height = 3, center = false, scale = [0, 0]) square(size = [2, 2], center = true);",
+            4.0,
+        ),
+        (
+            "linear_extrude(height = 6, center = true, scale = 0) circle(r = 2);",
+            PI * 4.0 * 2.0,
+        ),
+    ] {
+        let (s, w) = warned(text, Facets::Exact);
+        assert!(w.is_empty());
+        let (m, report) = mesh(&s, 128);
+        assert_eq!(report.boundary_edges, 0, "{text}");
+        assert_eq!(report.shells, 1, "{text}");
+        let v = signed_volume(&m);
+        assert!(rel_err(v, volume) < 0.01, "{text}: {v} vs {volume}");
+    }
+}
+
+/// `hull()` of any children: a difference is meshed and its vertices hulled. The cube with its
+/// top corner octant removed hulls to the cube less the corner tetrahedron (legs 5): 1000 − 125/6.
+#[test]
+fn hull_of_a_difference() {
+    let text = "hull() { difference() { cube(size = [10, 10, 10]);\n\
+                multmatrix([[1, 0, 0, 5], [0, 1, 0, 5], [0, 0, 1, 5], [0, 0, 0, 1]]) cube(size = [10, 10, 10]); } }";
+    let (s, w) = warned(text, Facets::Exact);
+    assert!(w.is_empty());
+    let (m, report) = mesh(&s, 128);
+    assert_eq!((report.boundary_edges, report.shells), (0, 1));
+    let v = signed_volume(&m);
+    let exact = 1000.0 - 125.0 / 6.0;
+    assert!(rel_err(v, exact) < 0.005, "{v} vs {exact}");
+    // A 2D difference under a hull: the square less its corner square hulls to the square less
+    // the corner triangle (legs 2).
+    let text = "linear_extrude(height = 1) hull() difference() { square(size = [4, 4]); square(size = [2, 2]); }";
+    let (m, _) = mesh(&warned(text, Facets::Exact).0, 128);
+    let v = signed_volume(&m);
+    assert!(rel_err(v, 14.0) < 0.01, "{v}");
+}
+
+/// `minkowski()`: a cube and an exact sphere give the rounded cube (7 + 3π + 4π/3 for unit
+/// sizes); convex operands the hull of vertex sums (two boxes: the box of summed sizes); in 2D
+/// too; two non-convex operands are refused at the statement.
+#[test]
+fn minkowski_of_convex_operands_and_spheres() {
+    let solid = load("minkowski.csg", Facets::Exact);
+    let (m, report) = mesh(&solid, 128);
+    assert_eq!(
+        (report.boundary_edges, report.shells, report.genus),
+        (0, 1, Some(0))
+    );
+    let exact = 7.0 + 3.0 * PI + 4.0 * PI / 3.0;
+    let v = signed_volume(&m);
+    assert!(rel_err(v, exact) < 0.01, "{v} vs {exact}");
+    for facets in [Facets::Exact, Facets::OpenScad] {
+        let (s, _) = warned(
+            "minkowski() { cube(size = [2, 1, 1]); cube(size = [1, 1, 3], center = true); }",
+            facets,
+        );
+        let (m, _) = mesh(&s, 96);
+        assert!(rel_err(signed_volume(&m), 3.0 * 2.0 * 4.0) < 0.005);
+    }
+    let (s, _) = warned(
+        "linear_extrude(height = 1) minkowski() { square(size = [2, 1]); polygon(points = [[0, 0], [1, 0], [0, 1]]); }",
+        Facets::Exact,
+    );
+    let (m, _) = mesh(&s, 96);
+    // A 2 × 1 rectangle plus a unit right triangle: the pentagon (0,0) (3,0) (3,1) (2,2) (0,2),
+    // area 5.5.
+    assert!(
+        rel_err(signed_volume(&m), 5.5) < 0.01,
+        "{}",
+        signed_volume(&m)
+    );
+    let l = "difference() { cube(2); cube(1); }";
+    let e = import(
+        &format!("group() {{\nminkowski() {{ {l} {l} }}\n}}"),
+        Facets::Exact,
+    )
+    .unwrap_err();
+    assert!(e.to_string().starts_with("2:1: minkowski: "), "{e}");
 }
 
 #[test]

@@ -1,7 +1,8 @@
 //! Linear extrusion of a profile along z over `[−h/2, h/2]`, optionally twisted (the profile turns
 //! by `twist` degrees from bottom to top) and scaled (its size goes linearly from 1 at the bottom
 //! to `scale` at the top, about the z axis; `scale` may differ along x and y, as OpenSCAD's
-//! `linear_extrude(scale = [sx, sy])`).
+//! `linear_extrude(scale = [sx, sy])`, or be 0 along both: a cone to the apex, whose top slice is
+//! a point and is evaluated with the scale clamped to 10⁻¹²).
 //!
 //! Field. At height `z` (clamped to the slab) the slice is the profile scaled by
 //! `k(z) = 1 + (s − 1)(z + h/2)/h` (per axis: `kx`, `ky`) and then turned by
@@ -25,6 +26,9 @@ use crate::primitive::{PrimitiveError, Shape, lipschitz_interval};
 use crate::profile::Profile;
 use crate::{Aabb, Interval};
 use glam::{DVec2, DVec3};
+
+/// Smallest slice scale used in the field (the top slice of a zero-scale extrusion is a point).
+const MIN_SLICE_SCALE: f64 = 1e-12;
 
 /// A profile extruded along z, centred at the origin, with optional twist and end scale.
 #[derive(Debug, Clone, PartialEq)]
@@ -55,7 +59,8 @@ impl Extrude {
     }
 
     /// The extrusion of `profile` over height `height`, turned by `twist` degrees and scaled to
-    /// `scale.x` along x and `scale.y` along y at the top.
+    /// `scale.x` along x and `scale.y` along y at the top. Both scales positive, or both zero (a
+    /// cone from the profile to the point above the origin).
     pub fn with_scale(
         profile: Profile,
         height: f64,
@@ -70,8 +75,11 @@ impl Extrude {
         if !twist.is_finite() {
             return Err(invalid("twist", "expected a finite number"));
         }
-        positive("scale", scale.x)?;
-        positive("scale", scale.y)?;
+        // Both zero: a cone to the apex over the profile (OpenSCAD's `scale = 0`).
+        if scale != DVec2::ZERO {
+            positive("scale", scale.x)?;
+            positive("scale", scale.y)?;
+        }
         let twist_rate = twist.to_radians() / height;
         let scale_rate = (scale - 1.0) / height;
         let rp = profile.radius();
@@ -156,6 +164,9 @@ impl Extrude {
             (q, false)
         };
         let (k, theta) = self.slice_transform(p.z);
+        // A zero scale shrinks the top slice to a point: keep the division finite there
+        // (m·d(u/k) tends to |u|, the distance to the apex, as k → 0).
+        let k = k.max(DVec2::splat(MIN_SLICE_SCALE));
         let (sin, cos) = theta.sin_cos();
         let u = DVec2::new(cos * qc.x + sin * qc.y, -sin * qc.x + cos * qc.y);
         let w = u / k;

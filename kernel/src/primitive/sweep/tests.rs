@@ -104,6 +104,42 @@ fn plain_extrusion_of_a_circle_is_the_cylinder() {
     }
 }
 
+/// `scale = 0` (OpenSCAD's `linear_extrude(scale = 0)`) is the cone to the apex: the same inside
+/// as the exact cone, finite values up to and beyond the apex, the cone's volume, and a field
+/// that passes the conformance checks; one zero scale factor alone is still refused.
+#[test]
+fn zero_scale_extrusion_is_the_cone_to_the_apex() {
+    let e = Extrude::new(Profile::circle(0.5).unwrap(), 1.2, 0.0, 0.0).unwrap();
+    let c = Cone {
+        bottom_radius: 0.5,
+        top_radius: 0.0,
+        height: 1.2,
+    };
+    let mut rng = Rng::new(33);
+    for _ in 0..4000 {
+        let p = rng.vec(1.0);
+        let (v, w) = (e.value(p), c.value(p));
+        assert!(v.is_finite(), "{p}");
+        if w.abs() > 1e-9 {
+            assert_eq!(v < 0.0, w < 0.0, "{p}: {v} vs {w}");
+        }
+    }
+    assert!(e.value(DVec3::new(0.0, 0.0, 0.6)).abs() < 1e-9);
+    assert!(e.value(DVec3::new(0.0, 0.0, 0.7)) > 0.0);
+    let volume = PI * 0.25 * 1.2 / 3.0;
+    assert!((e.volume() - volume).abs() < 1e-12 * volume);
+    check_shape(&e, 1.5);
+    assert!(
+        Extrude::with_scale(
+            Profile::circle(0.5).unwrap(),
+            1.0,
+            0.0,
+            DVec2::new(0.0, 1.0)
+        )
+        .is_err()
+    );
+}
+
 #[test]
 fn twisted_scaled_extrusion_has_the_right_inside() {
     let e = &extrusions()[2];
@@ -368,7 +404,7 @@ fn invalid_sweeps_are_rejected() {
         "height"
     );
     assert_eq!(
-        Extrude::new(Profile::circle(1.0).unwrap(), 1.0, 0.0, 0.0)
+        Extrude::new(Profile::circle(1.0).unwrap(), 1.0, 0.0, -0.5)
             .unwrap_err()
             .parameter(),
         "scale"
