@@ -19,6 +19,17 @@
 //! derivative of exactly 0 counts as outside (the old rule), which only a surface tangent to `d`
 //! to all orders can give.
 //!
+//! Contacts of lower dimension: where the tie of a `min`/`max` is between operands that meet from
+//! opposite sides (their derivatives along `d` have opposite signs), the step along `d` lands in
+//! one of them, but the point may be a pinch (two balls touching at a point, two cylinders along a
+//! line) rather than a shared face. The solid there is then decided by its regularised meaning:
+//! the point is settled with the solid's interior only if the solid has no exterior point beside
+//! it within the contact plane ([`Program::contact_probe`]: four points `1e-5` of the scale away
+//! along the plane: beyond rounding noise by far, beside a shared face's rim only within that
+//! distance, and within a third of the interval margin, so pruned programs probe as the full one). A shared face keeps its samples inside (the union is one solid); a pinch takes them
+//! outside (tangent balls stay two shells, as every exact Boolean engine has them); dually for
+//! cavities touching inside a difference.
+//!
 //! The rule reads only the point and the field, so it is the same in every cell, brick and
 //! thread. It is also the same for a pruned program inside its box: pruning drops an operand only
 //! when it loses by more than the interval margin (`3e-5` of the scale, fifteen times the tie
@@ -37,6 +48,10 @@ pub const PERTURBATION: DVec3 = DVec3::new(
     0.391_430_291_900_961_6,
 );
 
+/// Scratch slot of [`Program::inside_at_zero`]: value, derivative along [`PERTURBATION`], and
+/// whether the value came through a contact (see the module docs).
+pub type ZeroSlot = (f64, f64, bool);
+
 /// Values closer than this are ties (twice the samplers' single-precision noise band at the same
 /// coordinate scale).
 pub fn tie_tolerance(p: DVec3) -> f64 {
@@ -47,20 +62,22 @@ impl Program {
     /// Whether the solid contains the points `p + ε·`[`PERTURBATION`] for all small enough
     /// `ε > 0`: the inside test for a sample whose value is (numerically) zero. `slots` is
     /// scratch (resized as needed).
-    pub fn inside_at_zero(&self, p: DVec3, slots: &mut Vec<(f64, f64)>) -> bool {
+    pub fn inside_at_zero(&self, p: DVec3, slots: &mut Vec<ZeroSlot>) -> bool {
         let tol = tie_tolerance(p);
         let step = 1e-7 * (1.0 + p.abs().max_element());
         let q = p + PERTURBATION * step;
         slots.clear();
-        slots.resize(self.register_count, (0.0, 0.0));
-        // Lexicographic order on (value, derivative), values within `tol` tying.
-        let less = |x: (f64, f64), y: (f64, f64)| {
+        slots.resize(self.register_count, (0.0, 0.0, false));
+        // Lexicographic order on (value, derivative), values within `tol` tying. The flag says
+        // that the value came through a tie of operands meeting from opposite sides (a contact).
+        let less = |x: ZeroSlot, y: ZeroSlot| {
             if (x.0 - y.0).abs() <= tol {
                 x.1 < y.1
             } else {
                 x.0 < y.0
             }
         };
+        let opposed = |x: ZeroSlot, y: ZeroSlot| (x.0 - y.0).abs() <= tol && x.1 * y.1 < 0.0;
         for (i, ins) in self.instrs.iter().enumerate() {
             let r = |v: u32| self.regs[v as usize] as usize;
             let v = match *ins {
@@ -69,19 +86,21 @@ impl Program {
                     let s = &self.primitives[prim as usize];
                     let v0 = s.value(f.apply(p));
                     let v1 = s.value(f.apply(q));
-                    (f.sigma * v0, f.sigma * (v1 - v0) / step)
+                    (f.sigma * v0, f.sigma * (v1 - v0) / step, false)
                 }
                 Instr::Min(a, b) => {
                     let (x, y) = (slots[r(a)], slots[r(b)]);
-                    if less(y, x) { y } else { x }
+                    let w = if less(y, x) { y } else { x };
+                    (w.0, w.1, w.2 || opposed(x, y))
                 }
                 Instr::Max(a, b) => {
                     let (x, y) = (slots[r(a)], slots[r(b)]);
-                    if less(x, y) { y } else { x }
+                    let w = if less(x, y) { y } else { x };
+                    (w.0, w.1, w.2 || opposed(x, y))
                 }
                 Instr::Neg(a) => {
                     let x = slots[r(a)];
-                    (-x.0, -x.1)
+                    (-x.0, -x.1, x.2)
                 }
                 Instr::SmoothMin(a, b, k) => {
                     let (x, y, rad) = (slots[r(a)], slots[r(b)], k.get());
@@ -93,21 +112,59 @@ impl Program {
                     } else {
                         lo.1
                     };
-                    (super::smooth_min(x.0, y.0, rad), d)
+                    (super::smooth_min(x.0, y.0, rad), d, lo.2)
                 }
                 Instr::Abs(a) => {
                     let x = slots[r(a)];
-                    if less(x, (0.0, 0.0)) { (-x.0, -x.1) } else { x }
+                    if less(x, (0.0, 0.0, false)) {
+                        (-x.0, -x.1, x.2)
+                    } else {
+                        x
+                    }
                 }
                 Instr::AddConst(a, k) => {
                     let x = slots[r(a)];
-                    (x.0 + k.get(), x.1)
+                    (x.0 + k.get(), x.1, x.2)
                 }
-                Instr::Const(c) => (c.value(), 0.0),
+                Instr::Const(c) => (c.value(), 0.0, false),
             };
             slots[self.regs[i] as usize] = v;
         }
-        let (v, d) = slots[*self.regs.last().expect("non-empty") as usize];
-        if v.abs() <= tol { d < 0.0 } else { v < 0.0 }
+        let (v, d, contact) = slots[*self.regs.last().expect("non-empty") as usize];
+        if v.abs() > tol {
+            return v < 0.0;
+        }
+        let inside = d < 0.0;
+        if contact && self.contact_probe(p, inside) {
+            !inside
+        } else {
+            inside
+        }
+    }
+
+    /// Whether the zero point `p`, settled `inside` (or not) by the step along [`PERTURBATION`]
+    /// across a contact of two operands, is a pinch: the field has the other sign beside `p`
+    /// within the contact plane (the plane normal to the gradient a short step along the
+    /// perturbation, inside one operand). See the module docs.
+    fn contact_probe(&self, p: DVec3, inside: bool) -> bool {
+        let scale = 1.0 + p.abs().max_element();
+        let eta = 1e-5 * scale;
+        let noise = 1e-12 * scale;
+        let mut slots = Vec::new();
+        // The analytic gradient at `p`: that of the operand each min/max picks there, which at a
+        // contact of opposite operands is the contact plane's normal.
+        let n = self
+            .value_gradient_with(p, &mut Vec::new())
+            .1
+            .normalize_or_zero();
+        if n == DVec3::ZERO {
+            return false;
+        }
+        let t1 = n.any_orthonormal_vector();
+        let t2 = n.cross(t1);
+        [t1, -t1, t2, -t2].into_iter().any(|t| {
+            let v = self.value_with(p + t * eta, &mut slots);
+            if inside { v > noise } else { v < -noise }
+        })
     }
 }

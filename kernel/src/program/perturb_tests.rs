@@ -141,3 +141,25 @@ fn pruned_programs_settle_zeros_as_the_full_program() {
     }
     assert!(zeros > 100, "{zeros}");
 }
+
+#[test]
+fn point_and_line_contacts_stay_apart() {
+    // Two balls touching at the origin: the pinch is outside (two solids), though the step along
+    // the perturbation lands in one of them.
+    let balls = Solid::sphere(0.5)
+        .translate(DVec3::new(-0.5, 0.0, 0.0))
+        .union(&Solid::sphere(0.5).translate(DVec3::new(0.5, 0.0, 0.0)));
+    assert_eq!(balls.compile().value(DVec3::ZERO), 0.0);
+    assert!(!inside(&balls, DVec3::ZERO));
+    // Two cylinders side by side touching along the z axis.
+    let rods = Solid::cylinder(0.5, 2.0)
+        .translate(DVec3::new(-0.5, 0.0, 0.0))
+        .union(&Solid::cylinder(0.5, 2.0).translate(DVec3::new(0.5, 0.0, 0.0)));
+    assert!(!inside(&rods, DVec3::new(0.0, 0.0, 0.25)));
+    // Two ball cavities touching inside a block: the material between them is kept.
+    let block = Solid::cuboid(DVec3::splat(4.0)).difference(&balls.clone());
+    assert!(inside(&block, DVec3::ZERO));
+    // A shared face is still inside, also next to its rim.
+    let u = unit_box_at(0.0, 0.0, 0.0).union(&unit_box_at(1.0, 0.0, 0.0));
+    assert!(inside(&u, DVec3::new(1.0, 0.001, 0.999)));
+}

@@ -95,7 +95,7 @@ pub(crate) struct BoxSamples {
     /// Values at the points, settled ([`settle`]: noise snapped, zeros signed by perturbation).
     pub values: Vec<f32>,
     /// Scratch of the symbolic inside test at zeros.
-    zero_slots: Vec<(f64, f64)>,
+    zero_slots: Vec<solidkit_kernel::program::perturb::ZeroSlot>,
 }
 
 impl BoxSamples {

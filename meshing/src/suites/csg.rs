@@ -12,8 +12,8 @@
 //! - `nested_shells`: a ball of radius 1 hollowed to 0.8 with a ball of radius 0.5 inside (three
 //!   surfaces);
 //! - `tangent_spheres`: two balls of radius 0.5 touching at the origin, meshed on a grid with a
-//!   sample at the origin (the field is exactly 0 there and counts as outside, so the mesh has two
-//!   shells a hair apart);
+//!   sample at the origin (the field is exactly 0 there; the point is a pinch, which the zero rule
+//!   settles outside, so the mesh has two shells a hair apart);
 //! - `thin_plates`: three parallel plates 0.08 thick (three cells at resolution 64).
 //!
 //! By sampling ([`sample_volume`]): `gyroid_ball` (a gyroid sheet of period 1 cut by the unit
@@ -127,7 +127,7 @@ fn recipes() -> Result<Vec<Recipe>, SuiteError> {
                 .union(&Solid::sphere(0.5).translate(DVec3::new(0.5, 0.0, 0.0))),
             truth: exact(PI / 3.0, 2.0 * PI, 2, 0)
                 .with_bbox([-1.0, -0.5, -0.5], [1.0, 0.5, 0.5])
-                .with_note("the exact union is pinched at the origin (not a manifold); the grid has a sample there whose value is exactly 0 (outside), so the mesh is two closed shells"),
+                .with_note("the exact union is pinched at the origin (not a manifold); the grid has a sample there whose value is exactly 0, a pinch that the zero rule settles outside, so the mesh is two closed shells"),
             grid: Grid::Lattice,
         },
         Recipe {
