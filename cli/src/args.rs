@@ -151,6 +151,26 @@ pub struct MeshArgs {
     /// symbolic link leading out, no absolute paths.
     #[arg(long, value_name = "DIR")]
     pub allow_path: Vec<PathBuf>,
+    /// Mesh again on grids up to this many times finer (1, 2, 4, 8, 16 or 32; 1: never) when
+    /// features thinner than a cell are lost or thinned all along the surface.
+    #[arg(long, default_value_t = 32, value_parser = parse_refine)]
+    pub refine: usize,
+    /// Most samples a refined run may be expected to evaluate (1000 to 2 000 000 000).
+    #[arg(long, default_value_t = 64_000_000, value_parser = parse_refine_budget)]
+    pub refine_budget: u64,
+}
+
+fn parse_refine(s: &str) -> Result<usize, String> {
+    let f = parse_in_range(s, 1, 32, "a refinement factor")?;
+    if f.is_power_of_two() {
+        Ok(f)
+    } else {
+        Err(format!("{s}: expected 1, 2, 4, 8, 16 or 32"))
+    }
+}
+
+fn parse_refine_budget(s: &str) -> Result<u64, String> {
+    parse_in_range(s, 1000, 2_000_000_000, "a number of samples").map(|n| n as u64)
 }
 
 /// `--facets`: round primitives of `.csg` inputs.

@@ -12,6 +12,7 @@ pub mod io;
 pub mod marching_cubes;
 pub mod measure;
 pub mod octree;
+pub mod refine;
 pub mod sink;
 pub mod subdivision;
 pub mod suites;

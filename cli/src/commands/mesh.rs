@@ -12,10 +12,12 @@ use solidkit_meshing::dual_contouring::{DcOptions, mesh_dc};
 use solidkit_meshing::io::write_mesh;
 use solidkit_meshing::marching_cubes::GridSpec;
 use solidkit_meshing::octree::{SparseOptions, mesh_sparse};
+use solidkit_meshing::refine::{RefineOptions, mesh_refined};
 use solidkit_meshing::{ReportOptions, TopologyReport};
 use std::time::Instant;
 
-/// Meshes the input and prints the report; exit code 0.
+/// Meshes the input and prints the report; exit code 0, or 1 when the solid meshes empty though
+/// it is inside somewhere.
 pub fn run(a: &MeshArgs) -> Result<u8> {
     let (mut solid, warnings) = input::load_solid_warned(&a.input, a.facets.into(), &a.allow_path)?;
     for w in &warnings {
@@ -54,17 +56,25 @@ pub fn run(a: &MeshArgs) -> Result<u8> {
         progress: Some(progress.callback()),
         ..SparseOptions::default()
     };
-    let (mesh, stats) = match a.method {
-        Method::Mc => mesh_sparse(&program, spec, &sparse)?,
-        Method::Dc => {
-            let opts = DcOptions {
-                tolerance: a.tolerance,
-                sparse,
-            };
-            mesh_dc(&program, spec, &opts)?
-        }
+    let dc = DcOptions {
+        tolerance: a.tolerance,
+        sparse: sparse.clone(),
     };
+    let refine = RefineOptions {
+        max_factor: a.refine,
+        budget_samples: a.refine_budget,
+    };
+    let refined = mesh_refined(spec, &refine, |grid| match a.method {
+        Method::Mc => mesh_sparse(&program, grid, &sparse),
+        Method::Dc => mesh_dc(&program, grid, &dc),
+    })?;
     progress.finish();
+    let mut warnings = warnings;
+    for w in &refined.warnings {
+        crate::output::errln!("warning: {}: {w}", a.input.display());
+        warnings.push(format!("{}: {w}", a.input.display()));
+    }
+    let (mesh, stats, fine) = (refined.mesh, refined.stats, refined.spec);
     let time_s = start.elapsed().as_secs_f64();
     let options = ReportOptions {
         self_intersections: !a.no_self_intersections,
@@ -82,7 +92,9 @@ pub fn run(a: &MeshArgs) -> Result<u8> {
             ("time_s", json!(time_s)),
             ("report_time_s", json!(report_s)),
             ("resolution", json!(a.resolution)),
-            ("cells", json!(spec.cells)),
+            ("cells", json!(fine.cells)),
+            ("refinement", json!(refined.factor)),
+            ("samples_total", json!(refined.samples_total)),
             ("method", json!(a.method.name())),
             ("tolerance", json!(a.tolerance)),
             ("samples_evaluated", json!(stats.samples_evaluated)),
@@ -92,11 +104,16 @@ pub fn run(a: &MeshArgs) -> Result<u8> {
         outln!("{}", report::to_json(&r, &extra)?)?;
     } else {
         out!("{}", r.to_text())?;
-        let [x, y, z] = spec.cells;
+        let [x, y, z] = fine.cells;
         outln!(
-            "resolution: {} ({x} x {y} x {z} cells of {:.6})",
+            "resolution: {} ({x} x {y} x {z} cells of {:.6}{})",
             a.resolution,
-            spec.cell
+            fine.cell,
+            if refined.factor > 1 {
+                format!(", refined {} times for thin features", refined.factor)
+            } else {
+                String::new()
+            }
         )?;
         outln!("time: {time_s:.3} s")?;
         outln!("report time: {report_s:.3} s")?;
@@ -105,5 +122,5 @@ pub fn run(a: &MeshArgs) -> Result<u8> {
             outln!("wrote: {}", out.display())?;
         }
     }
-    Ok(0)
+    Ok(u8::from(refined.lost_solid))
 }

@@ -71,6 +71,8 @@ pub(crate) struct Block {
     pub evaluation_s: f64,
     /// The program valid in the block (sparse path).
     pub program: Option<std::sync::Arc<solidkit_kernel::Program>>,
+    /// Thin and hidden features in the block (sparse path only).
+    pub thin: crate::octree::ThinCounts,
 }
 
 impl Block {

@@ -56,6 +56,7 @@ pub(crate) fn sparse_blocks(
                     scratch,
                 );
                 b.evaluation_s += sampling;
+                b.thin = values.thin;
                 b.program = Some(leaf.program.clone());
                 let d = done.fetch_add(1, Ordering::Relaxed) + 1;
                 opts.report(Progress {
@@ -73,6 +74,9 @@ pub(crate) fn sparse_blocks(
     stats.bricks_s = t1.elapsed().as_secs_f64();
     stats.samples_evaluated = blocks.iter().map(|b| b.samples).sum();
     stats.evaluation_cpu_s = blocks.iter().map(|b| b.evaluation_s).sum();
+    for b in &blocks {
+        stats.thin.add(&b.thin);
+    }
     blocks.sort_unstable_by_key(|b| (b.coord[2], b.coord[1], b.coord[0]));
     Ok(blocks)
 }

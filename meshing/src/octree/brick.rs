@@ -8,12 +8,13 @@
 //! the ones owned by a neighbour.
 
 use super::subdivide::Node;
+use super::thin::ThinCounts;
 use crate::marching_cubes::polygonize::loop_centre;
 use crate::marching_cubes::table::{CENTRE, NO_CENTRE, case_table, edge_origin};
 use crate::marching_cubes::{GridSpec, edge_vertex, inside, settle};
 use glam::Vec3;
 use solidkit_kernel::Program;
-use solidkit_kernel::program::BatchScratch;
+use solidkit_kernel::program::{BatchScratch, IntervalScratch};
 
 /// Number of distinct local edge ids (14 bits).
 pub(crate) const LOCAL_EDGE_IDS: usize = 1 << 14;
@@ -46,6 +47,8 @@ pub(crate) struct BrickOutput {
     pub samples: u64,
     /// Seconds spent evaluating the samples.
     pub evaluation_s: f64,
+    /// Thin and hidden features in the brick.
+    pub thin: ThinCounts,
 }
 
 /// The crossing edges a brick owns, row by row.
@@ -96,6 +99,10 @@ pub(crate) struct BoxSamples {
     pub values: Vec<f32>,
     /// Scratch of the symbolic inside test at zeros.
     zero_slots: Vec<solidkit_kernel::program::perturb::ZeroSlot>,
+    /// Thin and hidden features of the last box sampled ([`super::thin`]).
+    pub thin: ThinCounts,
+    /// Scratch of the feature search.
+    interval: IntervalScratch,
 }
 
 impl BoxSamples {
@@ -133,6 +140,7 @@ impl BoxSamples {
                 program.inside_at_zero(p, slots)
             });
         }
+        self.thin = super::thin::scan(&self.values, n, min, spec, program, &mut self.interval);
         seconds
     }
 }
@@ -267,5 +275,6 @@ pub(crate) fn process(
         triangles: out,
         samples: s.samples.values.len() as u64,
         evaluation_s: s.evaluation_s,
+        thin: s.samples.thin,
     }
 }

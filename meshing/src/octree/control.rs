@@ -113,4 +113,6 @@ pub struct MeshStats {
     pub evaluation_cpu_s: f64,
     /// Seconds spent numbering and emitting the mesh.
     pub assemble_s: f64,
+    /// Features the grid thins or misses, over all leaf bricks ([`super::thin`]).
+    pub thin: super::ThinCounts,
 }

@@ -8,17 +8,19 @@
 //! numbered by sorting on grid keys in the dense path's order.
 //!
 //! `subdivide.rs` builds the octree level by level (parallel within a level); `brick.rs` samples and
-//! triangulates one leaf; `assemble.rs` merges the bricks into a mesh.
+//! triangulates one leaf; `thin.rs` finds features the grid thins or misses; `assemble.rs` merges the bricks into a mesh.
 
 mod assemble;
 mod brick;
 mod control;
 mod subdivide;
+pub mod thin;
 
 /// The surface leaf bricks with their pruned programs (also used by dual contouring).
 pub(crate) use brick::BoxSamples;
 pub use control::{CancelToken, Cancelled, MeshStats, Progress, ProgressFn, SparseOptions};
 pub(crate) use subdivide::surface_bricks as surface_nodes;
+pub use thin::ThinCounts;
 
 use crate::IndexedMesh;
 use crate::marching_cubes::{GridSpec, SampleGrid, polygonize_into};
@@ -75,6 +77,9 @@ pub fn mesh_sparse_into(
     drop(leaves);
     stats.samples_evaluated = outputs.iter().map(|o| o.samples).sum();
     stats.evaluation_cpu_s = outputs.iter().map(|o| o.evaluation_s).sum();
+    for o in &outputs {
+        stats.thin.add(&o.thin);
+    }
     let t2 = std::time::Instant::now();
     stats.bricks_s = (t2 - t1).as_secs_f64();
     outputs.sort_unstable_by_key(|o| (o.edges.coord[2], o.edges.coord[1], o.edges.coord[0]));

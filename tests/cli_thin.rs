@@ -1,0 +1,141 @@
+//! Features thinner than a cell, through `solidkit mesh` as users reach it (issue 13): at
+//! `--resolution 128` with default settings, a 10 × 10 × 0.02 plate, a 10-cube cut by a 0.01-wide
+//! slot, a tube of radius 10 with a 0.02 wall and two unit cubes 199 apart with a ball of radius
+//! 0.5 between them all mesh as the solids they are (shells, genus, volume against exact values),
+//! closed, manifold, oriented and free of self-intersections; the same models with refinement
+//! off say what they lose in `warnings`, and a solid that then meshes empty exits 1.
+
+use serde_json::Value;
+use solidkit_tests::{path_str, run_cli, success_json};
+use std::f64::consts::PI;
+
+const BIN: &str = env!("CARGO_BIN_EXE_solidkit");
+
+fn write(dir: &tempfile::TempDir, name: &str, root: &str) -> std::path::PathBuf {
+    let path = dir.path().join(name);
+    let tree = format!(r#"{{"format":"solidkit-tree","version":1,"root":{root}}}"#);
+    std::fs::write(&path, tree).expect("write tree");
+    path
+}
+
+fn boxed(size: [f64; 3]) -> String {
+    format!(r#"{{"type":"box","size":{size:?}}}"#)
+}
+
+fn translate(offset: [f64; 3], child: &str) -> String {
+    format!(r#"{{"type":"translate","offset":{offset:?},"child":{child}}}"#)
+}
+
+fn cylinder(radius: f64, height: f64) -> String {
+    format!(r#"{{"type":"cylinder","radius":{radius:?},"height":{height:?}}}"#)
+}
+
+/// The models: name, tree, shells, genus, exact volume and the allowed relative volume error.
+fn models() -> Vec<(&'static str, String, u64, i64, f64, f64)> {
+    vec![
+        ("plate", boxed([10.0, 10.0, 0.02]), 1, 0, 2.0, 0.02),
+        (
+            "slot",
+            format!(
+                r#"{{"type":"difference","children":[{},{}]}}"#,
+                boxed([10.0; 3]),
+                boxed([0.01, 12.0, 12.0])
+            ),
+            2,
+            0,
+            1000.0 - 0.01 * 100.0,
+            0.02,
+        ),
+        (
+            "tube",
+            format!(
+                r#"{{"type":"difference","children":[{},{}]}}"#,
+                cylinder(10.02, 2.0),
+                cylinder(10.0, 3.0)
+            ),
+            1,
+            1,
+            PI * (10.02f64.powi(2) - 100.0) * 2.0,
+            0.03,
+        ),
+        (
+            "spread",
+            format!(
+                r#"{{"type":"union","children":[{},{},{{"type":"sphere","radius":0.5}}]}}"#,
+                translate([-99.5, 0.0, 0.0], &boxed([1.0; 3])),
+                translate([99.5, 0.0, 0.0], &boxed([1.0; 3]))
+            ),
+            3,
+            0,
+            2.0 + 4.0 / 3.0 * PI * 0.125,
+            // The ball is 2.5 cells across after refinement: found and kept, not fine.
+            0.15,
+        ),
+    ]
+}
+
+fn mesh(path: &std::path::Path, extra: &[&str]) -> std::process::Output {
+    let mut args = vec!["mesh", path_str(path), "--resolution", "128", "--json"];
+    args.extend_from_slice(extra);
+    run_cli(BIN, &args)
+}
+
+#[test]
+fn thin_features_mesh_at_resolution_128() {
+    let dir = tempfile::tempdir().expect("temp dir");
+    for (name, root, shells, genus, volume, tol) in models() {
+        let path = write(&dir, &format!("{name}.json"), &root);
+        let r = success_json(&mesh(&path, &[]));
+        let get = |k: &str| r[k].clone();
+        assert_eq!(get("shells"), Value::from(shells), "{name}: {r}");
+        assert_eq!(get("genus"), Value::from(genus), "{name}: {r}");
+        for k in ["closed", "manifold", "oriented"] {
+            assert_eq!(get(k), Value::Bool(true), "{name}: {k}");
+        }
+        assert_eq!(get("self_intersections"), Value::from(0), "{name}");
+        let v = get("volume").as_f64().expect("volume");
+        assert!(
+            (v - volume).abs() <= tol * volume,
+            "{name}: volume {v} vs exact {volume}"
+        );
+        assert!(get("refinement").as_u64().expect("factor") > 1, "{name}");
+    }
+}
+
+#[test]
+fn without_refinement_losses_are_reported() {
+    let dir = tempfile::tempdir().expect("temp dir");
+    for (name, root, ..) in models() {
+        let path = write(&dir, &format!("{name}.json"), &root);
+        let out = mesh(&path, &["--refine", "1", "--no-self-intersections"]);
+        let r: Value = serde_json::from_slice(&out.stdout).expect("JSON report");
+        let warnings = r["warnings"].as_array().expect("warnings list");
+        assert!(
+            warnings.iter().any(|w| w
+                .as_str()
+                .is_some_and(|w| w.contains("thinner than the cell"))),
+            "{name}: {r}"
+        );
+        let stderr = String::from_utf8_lossy(&out.stderr);
+        assert!(stderr.contains("warning: "), "{name}: {stderr}");
+        // The plate and the spread-out model lose everything at 128 cells: exit 1, not 0.
+        let empty = r["faces"] == Value::from(0);
+        assert_eq!(out.status.code(), Some(if empty { 1 } else { 0 }), "{name}");
+    }
+    // The spread model's three parts are all smaller than a cell: nothing is left.
+    let path = write(&dir, "spread_only.json", &models()[3].1);
+    assert_eq!(mesh(&path, &["--refine", "1"]).status.code(), Some(1));
+}
+
+#[test]
+fn refine_rejects_bad_factors() {
+    let dir = tempfile::tempdir().expect("temp dir");
+    let path = write(&dir, "cube.json", &boxed([1.0; 3]));
+    for bad in ["0", "3", "64", "x"] {
+        assert_eq!(
+            mesh(&path, &["--refine", bad]).status.code(),
+            Some(2),
+            "{bad}"
+        );
+    }
+}
