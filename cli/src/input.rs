@@ -72,7 +72,7 @@ pub fn load_solid_warned(
     let solid = match ext.as_deref() {
         Some("rhai") => crate::frontends::rhai::eval(&text, &name.to_string(), Arc::new(resolver))?,
         Some("csg") => {
-            let (solid, w) = crate::frontends::csg::import_with_warnings(&text, facets)
+            let (solid, w) = crate::frontends::csg::import_with_warnings(&text, facets, &resolver)
                 .map_err(|e| anyhow::anyhow!("{name}:{e}"))?;
             warnings.extend(w.iter().map(|w| format!("{name}:{w}")));
             solid

@@ -7,11 +7,14 @@ use super::error::{CsgError, Warning};
 use super::facets;
 use super::flat::{Flat, Leaf2, Op2, profile};
 use super::hull::{convex_hull, convex_hull_2d, convex_hull_within};
+use super::import::{Imported, import, string_arg};
+use super::offset::{Offset, offset};
 use super::parser::{Stmt, Tree, Value};
+use super::surface::{self, surface};
 use glam::{DVec2, DVec3};
 use solidkit_kernel::Solid;
 use solidkit_kernel::polyhedra::Polyhedron;
-use solidkit_kernel::primitive::{Extrude, Primitive, Revolve};
+use solidkit_kernel::primitive::{Extrude, MeshResolver, Primitive, Revolve};
 use solidkit_meshing::marching_cubes::GridSpec;
 use solidkit_meshing::octree::{SparseOptions, mesh_sparse};
 use std::sync::Arc;
@@ -41,13 +44,15 @@ struct Hullable {
 /// faces along rounded-off edges.
 const OPERAND_HULL_CELLS: f64 = 0.5;
 
-/// The conversion's state: how round primitives are built and the warnings so far.
-struct Ctx {
+/// The conversion's state: how round primitives are built, where imported files come from and
+/// the warnings so far.
+struct Ctx<'a> {
     facets: Facets,
+    files: &'a dyn MeshResolver,
     warnings: Vec<Warning>,
 }
 
-impl Ctx {
+impl Ctx<'_> {
     fn warn(&mut self, stmt: &Stmt, message: impl Into<String>) {
         self.warnings.push(Warning {
             pos: stmt.pos,
@@ -59,9 +64,14 @@ impl Ctx {
 /// Converts the whole tree (top-level statements form an implicit group): statements marked `%`
 /// or `*` are left out, and the first statement marked `!` is the whole model. Parts OpenSCAD
 /// skips with a warning are skipped here too, and their warnings returned.
-pub fn convert(tree: &Tree, facets: Facets) -> Result<(Solid, Vec<Warning>), CsgError> {
+pub fn convert(
+    tree: &Tree,
+    facets: Facets,
+    files: &dyn MeshResolver,
+) -> Result<(Solid, Vec<Warning>), CsgError> {
     let mut ctx = Ctx {
         facets,
+        files,
         warnings: Vec::new(),
     };
     // The arena is in document order, so the first `!` is the one with the smallest index.
@@ -232,7 +242,12 @@ fn non_finite(stmt: &Stmt) -> bool {
 }
 
 /// One statement from its children's geometry.
-fn node(stmt: &Stmt, children: Vec<Geom>, facets: Facets, ctx: &mut Ctx) -> Result<Geom, CsgError> {
+fn node(
+    stmt: &Stmt,
+    children: Vec<Geom>,
+    facets: Facets,
+    ctx: &mut Ctx<'_>,
+) -> Result<Geom, CsgError> {
     let faceted = facets == Facets::OpenScad;
     let primitive = matches!(
         stmt.name.as_str(),
@@ -397,6 +412,50 @@ fn node(stmt: &Stmt, children: Vec<Geom>, facets: Facets, ctx: &mut Ctx) -> Resu
                 Revolve::new(p, angle).map(|r| Primitive::Revolve(Arc::new(r)))
             })?;
             Ok(Geom::Solid(s))
+        }
+        "import" => {
+            let mut found = Vec::new();
+            let got = import(stmt, ctx.files, &mut |m| found.push(m))?;
+            for m in found {
+                ctx.warn(stmt, m);
+            }
+            leaf(match got {
+                Imported::Solid(s) => Geom::Solid(s),
+                Imported::Flat(f) => f.map_or(Geom::Empty, Geom::Flat),
+            })
+        }
+        "surface" => {
+            let path = string_arg(stmt, "file", Some(0))
+                .filter(|p| !p.is_empty())
+                .ok_or_else(|| stmt.error("'file': expected a file name"))?;
+            surface::check_path(stmt, path)?;
+            let bytes = ctx.files.read_file(path).map_err(|e| stmt.error(e))?;
+            match surface(stmt, path, &bytes)? {
+                Some((v, f)) => leaf(Geom::Solid(polyhedron(stmt, v, f)?)),
+                None => {
+                    ctx.warn(stmt, format!("{path}: fewer than 2 × 2 heights: empty"));
+                    leaf(Geom::Empty)
+                }
+            }
+        }
+        "offset" => {
+            let how = if stmt.arg("r", None).is_some() {
+                Offset::Round {
+                    r: stmt.num("r", None, 1.0)?,
+                    res: stmt.resolution()?,
+                }
+            } else {
+                Offset::Delta {
+                    delta: stmt.num("delta", None, 1.0)?,
+                    chamfer: stmt.flag("chamfer", None, false)?,
+                }
+            };
+            let Some(flat) = flat_children(stmt, children, ctx) else {
+                return Ok(Geom::Empty);
+            };
+            Ok(offset(flat, how)
+                .map_err(|e| stmt.error(e))?
+                .map_or(Geom::Empty, Geom::Flat))
         }
         other => Err(CsgError::Unsupported {
             pos: stmt.pos,

@@ -1,7 +1,7 @@
 //! OpenSCAD `.csg` import: the flattened tree OpenSCAD writes with `openscad -o model.csg
 //! model.scad` (`group`, `union`, `difference`, `intersection`, `multmatrix`, `sphere`, `cube`,
 //! `cylinder`, `polyhedron`, `circle`, `square`, `polygon`, `linear_extrude`, `rotate_extrude`,
-//! `color`, `render`, `hull`, `minkowski`) to a [`Solid`].
+//! `color`, `render`, `hull`, `minkowski`, `import`, `surface`, `offset`) to a [`Solid`].
 //!
 //! Pipeline: [`lexer`] (tokens with line/column) → [`parser`] (an arena of statements, explicit
 //! stacks, so any nesting depth is safe) → `convert` (post-order over a work list).
@@ -25,17 +25,26 @@
 //! where the operand's field is a true distance); two non-convex operands are refused.
 //! Extrusions are exact sweeps of the profile (OpenSCAD's `slices` is ignored; `scale = 0` is a
 //! cone to the apex), and 2D Booleans under an extrusion are replayed as 3D Booleans of the swept
-//! leaves. Unsupported constructs (`offset`, `import`, `surface`, `text`, `projection`,
-//! `resize`, unknown modules) are errors naming the construct and its line.
+//! leaves. `import` reads mesh files (`.stl`, `.off`, `.obj`, `.ply`) as solids and `.dxf`
+//! drawings as 2D regions ([`import`], [`dxf`]), `surface` reads `.dat` height maps
+//! ([`surface`]), both relative to the `.csg` file's folder under the confinement rules of
+//! `solidkit_kernel::files` (`--allow-path` widens them); `offset` is exact where the result is a
+//! union of leaves or one convex leaf ([`offset`]). Unsupported constructs (`text`,
+//! `projection`, `resize`, `surface` of a PNG, `offset` that would need polygon clipping, unknown
+//! modules) are errors naming the construct and its line.
 
 pub mod args;
 mod convert;
+pub mod dxf;
 pub mod error;
 pub mod facets;
 pub mod flat;
 pub mod hull;
+pub mod import;
 pub mod lexer;
+pub mod offset;
 pub mod parser;
+pub mod surface;
 
 #[cfg(test)]
 mod fuzz;
@@ -45,6 +54,7 @@ mod tests;
 pub use error::{CsgError, Warning};
 
 use solidkit_kernel::Solid;
+use solidkit_kernel::primitive::MeshResolver;
 
 /// How round primitives are built.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
@@ -60,13 +70,17 @@ pub enum Facets {
 /// dropped (see [`import_with_warnings`]). Used by the tests.
 #[cfg(test)]
 pub fn import(text: &str, facets: Facets) -> Result<Solid, CsgError> {
-    import_with_warnings(text, facets).map(|(s, _)| s)
+    import_with_warnings(text, facets, &solidkit_kernel::primitive::NoMeshResolver).map(|(s, _)| s)
 }
 
 /// Imports `.csg` text as a solid (not yet validated), with a warning for each part skipped
 /// the way OpenSCAD skips it (a non-finite size, `points = undef`, 3D children of an extrusion,
 /// 2D and 3D children mixed in one group, …).
-pub fn import_with_warnings(text: &str, facets: Facets) -> Result<(Solid, Vec<Warning>), CsgError> {
+pub fn import_with_warnings(
+    text: &str,
+    facets: Facets,
+    files: &dyn MeshResolver,
+) -> Result<(Solid, Vec<Warning>), CsgError> {
     let tree = parser::parse(text)?;
-    convert::convert(&tree, facets)
+    convert::convert(&tree, facets, files)
 }

@@ -94,7 +94,8 @@ fn unsupported_construct_is_located() {
 }
 
 fn warned(text: &str, facets: Facets) -> (Solid, Vec<String>) {
-    let (s, w) = import_with_warnings(text, facets).unwrap_or_else(|e| panic!("{text}: {e}"));
+    let (s, w) = import_with_warnings(text, facets, &solidkit_kernel::primitive::NoMeshResolver)
+        .unwrap_or_else(|e| panic!("{text}: {e}"));
     s.validate().unwrap_or_else(|e| panic!("{text}: {e}"));
     (s, w.iter().map(|w| w.to_string()).collect())
 }

@@ -1,0 +1,163 @@
+//! `surface(file = "x.dat", center, invert)`: a height map as OpenSCAD 2021.01 builds it (its
+//! `surface.cc`). The `.dat` file holds rows of numbers (blank lines and lines starting with `#`
+//! are skipped; a missing value in a short row is 0); row `i`, column `j` is the height at
+//! `(j, i)`. Each grid cell is four triangles around its centre at the mean of its corners; walls
+//! go down to a flat bottom at `min(0, min(height) − 1)`. `center` moves the grid's middle to the
+//! origin. PNG height maps (`surface("x.png")`) are not read: an error says so.
+
+use super::error::CsgError;
+use super::parser::Stmt;
+use glam::DVec3;
+
+/// A polyhedron: vertices and faces counter-clockwise seen from outside.
+pub type Mesh = (Vec<DVec3>, Vec<Vec<u32>>);
+
+/// The most heights a `.dat` file may hold (a 2048 × 2048 grid).
+pub const MAX_HEIGHTS: usize = 1 << 22;
+
+/// The heights of a `.dat` file, row by row (rows padded with 0 to the longest one), or why not.
+pub fn parse_dat(text: &str) -> Result<Vec<Vec<f64>>, String> {
+    let mut rows: Vec<Vec<f64>> = Vec::new();
+    let mut count = 0usize;
+    for (k, line) in text.lines().enumerate() {
+        let line = line.trim();
+        if line.is_empty() || line.starts_with('#') {
+            continue;
+        }
+        let row = line
+            .split_whitespace()
+            .map(|w| w.parse::<f64>().ok().filter(|v| v.is_finite()))
+            .collect::<Option<Vec<f64>>>()
+            .ok_or_else(|| format!("line {}: expected finite numbers", k + 1))?;
+        count += row.len();
+        if count > MAX_HEIGHTS {
+            return Err(format!("more than {MAX_HEIGHTS} heights"));
+        }
+        rows.push(row);
+    }
+    let columns = rows.iter().map(Vec::len).max().unwrap_or(0);
+    for r in &mut rows {
+        r.resize(columns, 0.0);
+    }
+    Ok(rows)
+}
+
+/// OpenSCAD's surface mesh of `rows` (at least 2 × 2): vertices and triangles counter-clockwise
+/// seen from outside.
+pub fn mesh(rows: &[Vec<f64>], center: bool) -> Mesh {
+    let (ny, nx) = (rows.len(), rows[0].len());
+    let (ox, oy) = if center {
+        (-(nx as f64 - 1.0) / 2.0, -(ny as f64 - 1.0) / 2.0)
+    } else {
+        (0.0, 0.0)
+    };
+    let bottom = rows.iter().flatten().fold(0.0f64, |m, &v| m.min(v - 1.0));
+    let mut v: Vec<DVec3> = Vec::with_capacity(nx * ny * 2);
+    for (i, row) in rows.iter().enumerate() {
+        for (j, &h) in row.iter().enumerate() {
+            v.push(DVec3::new(ox + j as f64, oy + i as f64, h));
+        }
+    }
+    let top = |i: usize, j: usize| (i * nx + j) as u32;
+    let mut f: Vec<Vec<u32>> = Vec::with_capacity(4 * nx * ny + 4 * (nx + ny));
+    for i in 1..ny {
+        for j in 1..nx {
+            let (a, b, d, e) = (top(i - 1, j - 1), top(i - 1, j), top(i, j), top(i, j - 1));
+            let mean = (rows[i - 1][j - 1] + rows[i - 1][j] + rows[i][j - 1] + rows[i][j]) / 4.0;
+            let c = v.len() as u32;
+            v.push(DVec3::new(ox + j as f64 - 0.5, oy + i as f64 - 0.5, mean));
+            f.extend([vec![c, a, b], vec![c, b, d], vec![c, d, e], vec![c, e, a]]);
+        }
+    }
+    // The border, counter-clockwise seen from above.
+    let mut border: Vec<(usize, usize)> = (0..nx).map(|j| (0, j)).collect();
+    border.extend((1..ny).map(|i| (i, nx - 1)));
+    border.extend((0..nx - 1).rev().map(|j| (ny - 1, j)));
+    border.extend((1..ny - 1).rev().map(|i| (i, 0)));
+    let base = v.len() as u32;
+    v.extend(
+        border
+            .iter()
+            .map(|&(i, j)| DVec3::new(ox + j as f64, oy + i as f64, bottom)),
+    );
+    let middle = v.len() as u32;
+    v.push(DVec3::new(
+        ox + (nx as f64 - 1.0) / 2.0,
+        oy + (ny as f64 - 1.0) / 2.0,
+        bottom,
+    ));
+    let n = border.len();
+    for k in 0..n {
+        let (p, q) = (border[k], border[(k + 1) % n]);
+        let (tp, tq) = (top(p.0, p.1), top(q.0, q.1));
+        let (bp, bq) = (base + k as u32, base + ((k + 1) % n) as u32);
+        f.extend([vec![bp, bq, tq], vec![bp, tq, tp], vec![middle, bq, bp]]);
+    }
+    (v, f)
+}
+
+/// Refuses the files `surface` does not read (PNG), before anything is read.
+pub fn check_path(stmt: &Stmt, path: &str) -> Result<(), CsgError> {
+    if path.to_ascii_lowercase().ends_with(".png") {
+        return Err(stmt.error(format!(
+            "'{path}': PNG height maps are not read by surface() (use a .dat file)"
+        )));
+    }
+    Ok(())
+}
+
+/// The mesh of a `surface` statement from the bytes of its `.dat` file.
+pub fn surface(stmt: &Stmt, path: &str, bytes: &[u8]) -> Result<Option<Mesh>, CsgError> {
+    let text = String::from_utf8_lossy(bytes);
+    let rows = parse_dat(&text).map_err(|e| stmt.error(format!("{path}: {e}")))?;
+    if rows.len() < 2 || rows[0].len() < 2 {
+        return Ok(None);
+    }
+    let center = stmt.flag("center", None, false)?;
+    Ok(Some(mesh(&rows, center)))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Volume of a closed triangle mesh.
+    fn volume(v: &[DVec3], f: &[Vec<u32>]) -> f64 {
+        f.iter()
+            .map(|t| {
+                let [a, b, c] = [0, 1, 2].map(|k| v[t[k] as usize]);
+                a.dot(b.cross(c))
+            })
+            .sum::<f64>()
+            / 6.0
+    }
+
+    #[test]
+    fn flat_map_is_a_box_down_to_one_below_the_lowest_or_zero() {
+        let rows = parse_dat("# comment\n3 3 3\n\n3 3 3\n").unwrap();
+        let (v, f) = mesh(&rows, false);
+        // 2 × 1 cells, heights 3, bottom at 0.
+        assert!((volume(&v, &f) - 6.0).abs() < 1e-12);
+        let rows = parse_dat("-2 -2\n-2 -2\n").unwrap();
+        let (v, f) = mesh(&rows, true);
+        // Bottom at -3, top at -2: a unit cube.
+        assert!((volume(&v, &f) - 1.0).abs() < 1e-12);
+        assert!(v.iter().all(|p| p.x.abs() <= 0.5 && p.y.abs() <= 0.5));
+    }
+
+    #[test]
+    fn cell_centre_is_the_mean_and_short_rows_are_padded() {
+        let rows = parse_dat("0 0\n0 4\n").unwrap();
+        let (v, f) = mesh(&rows, false);
+        // Bottom at -1. Above z = 0, four triangles of area 1/4 around the centre (height 1),
+        // with mean heights 1/3, 5/3, 5/3, 1/3.
+        let above = 0.25 * (1.0 / 3.0 + 5.0 / 3.0 + 5.0 / 3.0 + 1.0 / 3.0);
+        assert!(
+            (volume(&v, &f) - (1.0 + above)).abs() < 1e-12,
+            "{}",
+            volume(&v, &f)
+        );
+        assert_eq!(parse_dat("1 2 3\n4\n").unwrap()[1], vec![4.0, 0.0, 0.0]);
+        assert!(parse_dat("1 x\n").is_err());
+    }
+}
