@@ -7,5 +7,6 @@ Modules: paths (where things are), meshio (mesh files), measure (topology and me
 triangle mesh, independent of solidkit), tree (the JSON tree: transforms, classification), field
 (the tree's field as numpy or scalar Python code), curves, leaves (meshes of single primitives),
 build_* (one per system), hausdorff, tolerance, verdict, report, runner (orchestration) and worker
-(the subprocess that builds one case in one system).
+(the subprocess that builds one case in one system); lattice (issue 13's property test: random
+lattice trees of boxes and cylinders, solidkit against manifold3d's exact Booleans).
 """

@@ -114,3 +114,30 @@ def measure(verts: np.ndarray, faces: np.ndarray) -> dict:
                bbox=[verts.min(axis=0).tolist(), verts.max(axis=0).tolist()],
                degenerate_faces=degenerate)
     return out
+
+
+def sharp_edges(verts: np.ndarray, faces: np.ndarray, min_angle_deg: float = 20.0) -> float:
+    """Σ ℓ · tan(φ/2) over the edges of a closed mesh whose two faces' normals differ by an angle
+    φ of at least `min_angle_deg` (creases, not the facets of a round surface): a grid mesher cuts
+    such an edge by a chamfer of cross-section at most ½ g² tan(φ/2) (½ g² at a right angle),
+    convex or concave alike, so this times ½ g² bounds the volume it moves there."""
+    verts = np.asarray(verts, dtype=np.float64)
+    faces = np.asarray(faces, dtype=np.int64).reshape(-1, 3)
+    p0, p1, p2 = verts[faces[:, 0]], verts[faces[:, 1]], verts[faces[:, 2]]
+    n = np.cross(p1 - p0, p2 - p0)
+    keep = np.linalg.norm(n, axis=1) > 0
+    n = n[keep] / np.linalg.norm(n[keep], axis=1, keepdims=True)
+    faces = faces[keep]
+    a = faces.reshape(-1)
+    b = faces[:, [1, 2, 0]].reshape(-1)
+    face = np.repeat(np.arange(len(faces)), 3)
+    key = np.minimum(a, b) * len(verts) + np.maximum(a, b)
+    order = np.argsort(key, kind="stable")
+    k = key[order]
+    pair = np.flatnonzero(k[1:] == k[:-1])     # consecutive half-edges of one edge
+    i, j = order[pair], order[pair + 1]
+    cos = np.clip(np.einsum("ij,ij->i", n[face[i]], n[face[j]]), -1.0, 1.0)
+    phi = np.arccos(cos)
+    sharp = phi >= np.radians(min_angle_deg)
+    length = np.linalg.norm(verts[a[i]] - verts[b[i]], axis=1)
+    return float(np.sum(length[sharp] * np.tan(np.minimum(phi[sharp], np.radians(179.0)) / 2)))

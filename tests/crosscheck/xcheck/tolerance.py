@@ -38,3 +38,17 @@ def area_tol(av: float, g_s: float, g_r: float, e_s: float, e_r: float) -> float
 
 def hausdorff_tol(g_s: float, g_r: float, e_s: float, e_r: float) -> float:
     return K_HAUSDORFF * (g_s + g_r) + e_s + e_r
+
+
+# Marching cubes cuts a crease (faces meeting at an angle φ between their normals) by a chamfer
+# whose cross-section is at most ½ g² tan(φ/2): the cut joins the crossings on the two cell
+# edges next to the crease, each at most a cell from it. Small against K_VOLUME's term on the
+# case list's solids; it dominates on bars and discs a few cells thick (the lattice trees of
+# docs/crosscheck.md), where the area term misses it.
+K_EDGE = 0.5
+
+
+def chamfer_tol(g: float, sharp_edges: float) -> float:
+    """Volume a grid of step g may cut off or add at creases; `sharp_edges` is
+    measure.sharp_edges of the exact (or reference) mesh: Σ ℓ tan(φ/2)."""
+    return K_EDGE * g * g * sharp_edges
