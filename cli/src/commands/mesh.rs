@@ -7,7 +7,8 @@ use crate::{input, report};
 use anyhow::{Result, anyhow};
 use glam::DVec3;
 use serde_json::json;
-use solidkit_kernel::{Aabb, Solid};
+use solidkit_kernel::primitive::MeshSource;
+use solidkit_kernel::{Aabb, NodeKind, Primitive, Solid};
 use solidkit_meshing::dual_contouring::{DcOptions, mesh_dc};
 use solidkit_meshing::io::write_mesh;
 use solidkit_meshing::marching_cubes::GridSpec;
@@ -19,7 +20,9 @@ use std::time::Instant;
 /// Meshes the input and prints the report; exit code 0, or 1 when the solid meshes empty though
 /// it is inside somewhere.
 pub fn run(a: &MeshArgs) -> Result<u8> {
-    let (mut solid, warnings) = input::load_solid_warned(&a.input, a.facets.into(), &a.allow_path)?;
+    let (mut solid, mut warnings) =
+        input::load_solid_warned(&a.input, a.facets.into(), &a.allow_path)?;
+    warnings.extend(open_mesh_warnings(&solid, &a.input));
     for w in &warnings {
         crate::output::errln!("warning: {}", crate::escape::one_line(w));
     }
@@ -123,4 +126,28 @@ pub fn run(a: &MeshArgs) -> Result<u8> {
         }
     }
     Ok(u8::from(refined.lost_solid))
+}
+
+/// One warning per open mesh operand (edges whose two directions are not used equally often):
+/// such a solid is where the mesh's winding number is at least ½, which caps each hole.
+fn open_mesh_warnings(solid: &Solid, input: &std::path::Path) -> Vec<String> {
+    let mut warnings = Vec::new();
+    solid.fold(|node, _: &[()]| {
+        if let NodeKind::Primitive(Primitive::Mesh(m)) = node.kind()
+            && m.open_edges() > 0
+        {
+            let what = match m.source() {
+                MeshSource::File { path } => format!("mesh \"{path}\""),
+                other => other.name().to_string(),
+            };
+            warnings.push(format!(
+                "{}: {what} is not closed ({} open edges): its inside is where its winding number is at least 1/2, which caps each hole",
+                input.display(),
+                m.open_edges()
+            ));
+        }
+    });
+    warnings.sort();
+    warnings.dedup();
+    warnings
 }

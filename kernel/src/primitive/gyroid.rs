@@ -50,6 +50,10 @@ pub fn cos_interval(x: Interval) -> Interval {
 /// Branch-free single-precision sine and cosine of one argument, sharing one range reduction
 /// (by π/2, Cody–Waite in three parts) and selecting the quadrant with bit operations, so loops
 /// over it vectorise. Accurate to 1e-6 plus the rounding of the argument, for |x| below 10⁵.
+/// Beyond, the reduction loses accuracy (from about 10⁹ its remainder is no longer small), so the
+/// remainder is clamped to ±0.8 (beyond π/4, so ordinary arguments are untouched) and both results
+/// always lie in [−1, 1]: inside the exact ranges the intervals assume, which culling and pruning
+/// need. (Single-precision arguments that large are more than 2π apart: the values are noise.)
 #[inline(always)]
 pub fn sincos_f32(x: f32) -> (f32, f32) {
     const TWO_OVER_PI: f32 = 2.0 / std::f32::consts::PI;
@@ -60,7 +64,10 @@ pub fn sincos_f32(x: f32) -> (f32, f32) {
     let j = x * TWO_OVER_PI + MAGIC;
     let k = j - MAGIC;
     let q = j.to_bits();
-    let r = ((x - k * A) - k * B) - k * C;
+    // `max` first: it also maps a NaN remainder (∞ − ∞ near f32::MAX) to a finite one, which
+    // `clamp` would keep.
+    #[allow(clippy::manual_clamp)]
+    let r = (((x - k * A) - k * B) - k * C).max(-0.8).min(0.8);
     let r2 = r * r;
     let sp = 2.755_731_9e-6f32;
     let sp = sp * r2 - 1.984_127e-4;
@@ -176,6 +183,27 @@ mod tests {
                 (cos_f32(x) as f64 - (x as f64).cos()).abs() < tol,
                 "cos {x}"
             );
+        }
+    }
+
+    #[test]
+    fn fast_sine_stays_in_range_for_huge_arguments() {
+        // Issue 15: at 1e12 the unclamped remainder gave 1e38 and ∞, outside the intervals that
+        // culled and pruned the boxes, so neighbouring bricks disagreed on signs (MC panicked).
+        let mut x = 1e5f32;
+        while x < f32::MAX / 1.1 {
+            for v in [x, -x, x * 1.37, -x * 2.9] {
+                let (s, c) = sincos_f32(v);
+                assert!(
+                    (-1.0..=1.0).contains(&s) && (-1.0..=1.0).contains(&c),
+                    "{v}: {s} {c}"
+                );
+            }
+            x *= 1.1;
+        }
+        for v in [f32::MAX, -f32::MAX] {
+            let (s, c) = sincos_f32(v);
+            assert!(s.abs() <= 1.0 && c.abs() <= 1.0, "{v}: {s} {c}");
         }
     }
 

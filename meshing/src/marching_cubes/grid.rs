@@ -1,6 +1,6 @@
 //! Uniform sampling grids: where the samples are ([`GridSpec`]) and their values ([`SampleGrid`]).
 
-use super::sign::{settle, settle_field};
+use super::sign::{NOISE, settle, settle_field};
 use glam::DVec3;
 use rayon::prelude::*;
 use solidkit_kernel::program::BatchScratch;
@@ -41,7 +41,37 @@ pub enum GridError {
         /// The per-axis limit.
         limit: usize,
     },
+    /// Sample coordinates beyond the single-precision range: they would be infinite.
+    #[error(
+        "the meshing bounds reach {bound:e}, beyond single precision (±3.4e38), where the samples are taken"
+    )]
+    BeyondSinglePrecision {
+        /// The coordinate of largest magnitude.
+        bound: f64,
+    },
+    /// Cells too small for the single precision the samples are taken in: sample values within
+    /// [`NOISE`]` · (1 + |coordinate|)` of zero are rounding noise ([`super::sign::snap_noise`]),
+    /// so a cell must span several such bands for the surface to be placed faithfully.
+    #[error(
+        "cells of {cell:.3e} are too small for single-precision coordinates near {bound:.3e}: values \
+         within {band:.3e} of zero are rounding noise there and a cell must span at least {min_bands} \
+         such bands; lower the resolution or give bounds nearer the origin"
+    )]
+    BelowSinglePrecision {
+        /// The cell size.
+        cell: f64,
+        /// The coordinate of largest magnitude.
+        bound: f64,
+        /// The noise band there.
+        band: f64,
+        /// The least number of noise bands per cell.
+        min_bands: u32,
+    },
 }
+
+/// The least number of single-precision noise bands ([`NOISE`]` · (1 + |coordinate|)`) a cell
+/// must span: the snapped values then move the surface by at most half a cell.
+pub const MIN_CELL_BANDS: u32 = 2;
 
 /// Most cells along one axis (vertex and triangle keys pack sample indices in 20 bits).
 pub const MAX_CELLS_PER_AXIS: usize = (1 << 20) - 2;
@@ -94,6 +124,24 @@ impl GridSpec {
             return Err(GridError::TooLarge {
                 cells: spec.cells,
                 limit: MAX_CELLS_PER_AXIS,
+            });
+        }
+        // Samples are evaluated at single-precision coordinates: refuse a grid they cannot
+        // represent faithfully (samples merged or unevenly spaced give wrong or broken meshes).
+        let far = spec.point(spec.cells[0], spec.cells[1], spec.cells[2]);
+        let bound = (0..3)
+            .map(|a| spec.origin[a].abs().max(far[a].abs()))
+            .fold(0.0, f64::max);
+        if bound as f32 == f32::INFINITY {
+            return Err(GridError::BeyondSinglePrecision { bound });
+        }
+        let band = f64::from(NOISE) * (1.0 + bound);
+        if spec.cell < f64::from(MIN_CELL_BANDS) * band {
+            return Err(GridError::BelowSinglePrecision {
+                cell: spec.cell,
+                bound,
+                band,
+                min_bands: MIN_CELL_BANDS,
             });
         }
         Ok(spec)

@@ -2,10 +2,17 @@
 //! walks instead of sorts: vertices by grid row `(k, j)` then `(i, axis)`, then the centre
 //! vertices of fanned loops by cell row, triangles by cell row then `i` and case order. Each grid row is covered by the bricks of one brick row, visited in
 //! `x` order, so concatenating their row segments gives the dense order.
+//!
+//! A brick's triangle may use an edge owned by a neighbour only if that neighbour saw the same
+//! sign change: true whenever the field's intervals bound its samples (culled boxes have no sign
+//! change, pruned programs give the same values). A field that breaks this (a bug of a primitive
+//! at extreme inputs) must not crash the mesher: such an edge gets one shared vertex at its
+//! midpoint, numbered after all others, and the mesh reports the resulting boundary.
 
 use super::brick::{
     BrickEdges, BrickTriangles, CENTRE_IDS, LOCAL_EDGE_IDS, local_edge, local_parts,
 };
+use crate::marching_cubes::GridSpec;
 use crate::sink::MeshSink;
 use rayon::prelude::*;
 use std::collections::HashMap;
@@ -59,10 +66,11 @@ fn owner(g: usize, brick: usize, bricks_along: usize) -> (usize, usize) {
 pub(crate) fn assemble(
     bricks: Vec<BrickEdges>,
     triangles: Vec<BrickTriangles>,
-    cells: [usize; 3],
+    spec: &GridSpec,
     brick: usize,
     sink: &mut impl MeshSink,
 ) {
+    let cells = spec.cells;
     let dims = cells.map(|c| c.div_ceil(brick).max(1));
     let index = BrickIndex::new(&bricks, dims);
     // Bricks of each brick row (z, y), in x order.
@@ -107,7 +115,9 @@ pub(crate) fn assemble(
     }
     // Triangle corners to vertex numbers, brick by brick in parallel, consuming the local lists.
     // A per-thread table maps the brick's own edge ids to numbers; neighbours are searched.
-    type Resolved = (Vec<[u32; 3]>, Vec<u32>, Vec<glam::Vec3>, Vec<u32>);
+    // Corners on an edge no neighbour lists (see the module docs) are `ORPHAN | i`, the `i`-th
+    // of the brick's orphan edge keys.
+    type Resolved = (Vec<[u32; 3]>, Vec<u32>, Vec<glam::Vec3>, Vec<u32>, Vec<u64>);
     let resolved: Vec<Resolved> = triangles
         .into_par_iter()
         .enumerate()
@@ -128,6 +138,7 @@ pub(crate) fn assemble(
                     }
                 }
                 let mut tris = Vec::with_capacity(t.triangles.len());
+                let mut orphans = Vec::new();
                 for (r, w) in t.triangle_rows.windows(2).enumerate() {
                     let span = w[0] as usize..w[1] as usize;
                     tris.extend(t.triangles[span].iter().map(|tri| {
@@ -141,14 +152,23 @@ pub(crate) fn assemble(
                                 own[id as usize]
                             } else {
                                 neighbour_vertex(b, id, &bricks, &bases, &index, brick, dims)
+                                    .unwrap_or_else(|key| {
+                                        orphans.push(key);
+                                        ORPHAN | (orphans.len() - 1) as u32
+                                    })
                             }
                         })
                     }));
                 }
-                (tris, t.triangle_rows, t.centres, t.centre_rows)
+                (tris, t.triangle_rows, t.centres, t.centre_rows, orphans)
             },
         )
         .collect();
+    let mut orphan_keys: Vec<u64> = resolved.iter().flat_map(|r| r.4.iter().copied()).collect();
+    orphan_keys.sort_unstable();
+    orphan_keys.dedup();
+    let orphan_base = count;
+    count += orphan_keys.len() as u32;
     sink.reserve(count as usize, resolved.iter().map(|r| r.0.len()).sum());
     let mut ids = Vec::with_capacity(count as usize);
     for &(b, r) in &order {
@@ -163,18 +183,45 @@ pub(crate) fn assemble(
     debug_assert_eq!(ids.len(), edge_vertices as usize);
     drop((bricks, bases, order, index));
     for (b, r) in cell_rows(cells, brick, &rows, &extents) {
-        let (_, _, centres, centre_rows) = &resolved[b];
+        let (_, _, centres, centre_rows, _) = &resolved[b];
         if !centre_rows.is_empty() {
             let span = centre_rows[r] as usize..centre_rows[r + 1] as usize;
             ids.extend(centres[span].iter().map(|p| sink.add_vertex(p.as_dvec3())));
         }
     }
+    ids.extend(orphan_keys.iter().map(|&key| {
+        let (g, axis) = unpack_edge(key);
+        let mut p = spec.point(g[0], g[1], g[2]);
+        p[axis] += 0.5 * spec.cell;
+        sink.add_vertex(p)
+    }));
     for (b, r) in cell_rows(cells, brick, &rows, &extents) {
-        let (tris, tri_rows, _, _) = &resolved[b];
+        let (tris, tri_rows, _, _, orphans) = &resolved[b];
         for t in &tris[tri_rows[r] as usize..tri_rows[r + 1] as usize] {
-            sink.add_triangle(t.map(|v| ids[v as usize]));
+            sink.add_triangle(t.map(|v| {
+                if v & ORPHAN == 0 {
+                    return ids[v as usize];
+                }
+                let key = orphans[(v & !ORPHAN) as usize];
+                let at = orphan_keys.binary_search(&key).unwrap_or_default();
+                ids[(orphan_base as usize) + at]
+            }));
         }
     }
+}
+
+/// Marks a triangle corner whose edge no brick lists (vertex numbers stay far below 2³¹).
+const ORPHAN: u32 = 1 << 31;
+
+/// Packs the grid edge along `axis` from sample `g` (each below 2²⁰) into one sortable key.
+fn pack_edge(g: [usize; 3], axis: usize) -> u64 {
+    ((g[2] as u64) << 42) | ((g[1] as u64) << 22) | ((g[0] as u64) << 2) | axis as u64
+}
+
+/// Inverse of [`pack_edge`].
+fn unpack_edge(key: u64) -> ([usize; 3], usize) {
+    let part = |shift: u32| ((key >> shift) & ((1 << 20) - 1)) as usize;
+    ([part(2), part(22), part(42)], (key & 3) as usize)
 }
 
 /// Every cell row of the grid in the dense path's order (`k`, then `j`, then the bricks of the
@@ -196,7 +243,8 @@ fn cell_rows<'a>(
     })
 }
 
-/// The number of the vertex on brick `b`'s local edge `id` when a neighbour owns it.
+/// The number of the vertex on brick `b`'s local edge `id` when a neighbour owns it, or the
+/// edge's key ([`pack_edge`]) when no brick lists it (see the module docs).
 fn neighbour_vertex(
     b: usize,
     id: u16,
@@ -205,14 +253,13 @@ fn neighbour_vertex(
     index: &BrickIndex,
     brick: usize,
     dims: [usize; 3],
-) -> u32 {
+) -> Result<u32, u64> {
     let (l, axis) = local_parts(id);
     let o = &bricks[b];
     let g = [0, 1, 2].map(|a| o.coord[a] * brick + l[a]);
     let parts = [0, 1, 2].map(|a| owner(g[a], brick, dims[a]));
-    let owner_brick = index
-        .get(parts.map(|p| p.0))
-        .expect("a crossing edge lies in a surface brick");
+    let orphan = || pack_edge(g, axis);
+    let owner_brick = index.get(parts.map(|p| p.0)).ok_or_else(orphan)?;
     let [il, jl, kl] = parts.map(|p| p.1);
     let o = &bricks[owner_brick];
     let r = kl * o.owned[1] + jl;
@@ -220,6 +267,6 @@ fn neighbour_vertex(
     let local = (il << 2 | axis) as u16;
     let at = row
         .binary_search_by_key(&local, |e| e.0)
-        .expect("the owner lists the edge");
-    bases[owner_brick][r] + at as u32
+        .map_err(|_| orphan())?;
+    Ok(bases[owner_brick][r] + at as u32)
 }

@@ -85,7 +85,7 @@ pub fn mesh_sparse_into(
     outputs.sort_unstable_by_key(|o| (o.edges.coord[2], o.edges.coord[1], o.edges.coord[0]));
     let (edges, triangles): (Vec<_>, Vec<_>) =
         outputs.into_iter().map(|o| (o.edges, o.triangles)).unzip();
-    assemble::assemble(edges, triangles, spec.cells, opts.brick_size(), sink);
+    assemble::assemble(edges, triangles, &spec, opts.brick_size(), sink);
     stats.assemble_s = t2.elapsed().as_secs_f64();
     Ok(stats)
 }

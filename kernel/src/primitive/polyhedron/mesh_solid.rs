@@ -8,6 +8,13 @@
 //! classifies points sensibly, and the zero set stays on the triangles; only near a defect may the
 //! sign flip away from the surface (the field is then not Lipschitz there).
 //!
+//! An open mesh (edges whose two directions are not used equally often: holes, flipped faces,
+//! dangling sheets) keeps the same rule, inside where the winding number is at least ½, but its
+//! sign then also changes away from the triangles, across the surface where the winding number
+//! passes ½ (which caps each hole). Its interval therefore never claims a sign: it is
+//! `±(|f(c)| + r)` over a box of centre `c` and half-diagonal `r`, which bounds the unsigned
+//! distance, so sparse meshers never cull a box that such a cap may cross.
+//!
 //! The mesh is kept with the description it came from (inline faces, a file path, or a prism), so
 //! the JSON writer can write the node back as it was read. Both live behind `Arc`s: cloning is
 //! cheap, and equality compares descriptions, not trees.
@@ -97,6 +104,9 @@ impl MeshSource {
 pub struct MeshSolid {
     source: Arc<MeshSource>,
     tree: Arc<MeshTree>,
+    /// Edges (by corner positions) whose two directions are not used equally often: 0 for a
+    /// closed, consistently oriented mesh.
+    open_edges: usize,
 }
 
 impl MeshSolid {
@@ -118,9 +128,11 @@ impl MeshSolid {
             faces: polyhedron.faces().to_vec(),
         };
         // A polyhedron always has faces, indices in range and finite coordinates.
+        let mesh = polyhedron.to_indexed();
         MeshSolid {
             source: Arc::new(source),
-            tree: Arc::new(MeshTree::new(&polyhedron.to_indexed())),
+            tree: Arc::new(MeshTree::new(&mesh)),
+            open_edges: open_edges(&mesh),
         }
     }
 
@@ -163,6 +175,7 @@ impl MeshSolid {
         Ok(MeshSolid {
             source: Arc::new(source),
             tree: Arc::new(MeshTree::new(mesh)),
+            open_edges: open_edges(mesh),
         })
     }
 
@@ -186,6 +199,13 @@ impl MeshSolid {
         Self::FIELD_ERROR
     }
 
+    /// Number of open edges: edges (by corner positions) whose two directions are not used
+    /// equally often. 0 for a closed, consistently oriented mesh; otherwise the solid is where
+    /// the winding number is at least ½, and its field is discontinuous away from the triangles.
+    pub fn open_edges(&self) -> usize {
+        self.open_edges
+    }
+
     /// The generalised winding number at `p` (about 1 inside, 0 outside).
     pub fn winding_number(&self, p: DVec3) -> f64 {
         self.tree.winding_number(p)
@@ -203,6 +223,25 @@ impl MeshSolid {
             distance
         }
     }
+}
+
+/// Edges whose two directions are used unequally often, corners compared by position (so an
+/// unwelded mesh that is closed counts none).
+fn open_edges(mesh: &IndexedMesh) -> usize {
+    let key = |i: u32| mesh.positions[i as usize].to_array().map(f64::to_bits);
+    let mut balance: std::collections::HashMap<([u64; 3], [u64; 3]), i64> =
+        std::collections::HashMap::with_capacity(mesh.triangles.len() * 3 / 2);
+    for t in &mesh.triangles {
+        for e in 0..3 {
+            let (a, b) = (key(t[e]), key(t[(e + 1) % 3]));
+            if a == b {
+                continue;
+            }
+            let (k, d) = if a < b { ((a, b), 1) } else { ((b, a), -1) };
+            *balance.entry(k).or_default() += d;
+        }
+    }
+    balance.values().filter(|&&d| d != 0).count()
 }
 
 /// Triangles of vertices and polygonal faces: indices checked, triangles as given, polygons
@@ -267,7 +306,12 @@ impl Shape for MeshSolid {
     }
 
     fn interval(&self, b: &Aabb) -> Interval {
-        lipschitz_interval(self, b)
+        if self.open_edges == 0 {
+            return lipschitz_interval(self, b);
+        }
+        // The sign may flip anywhere (see the module docs); the distance is 1-Lipschitz.
+        let reach = self.value(b.center()).abs() + b.half_extents().length();
+        Interval::new(-reach, reach)
     }
 
     fn bbox(&self) -> Aabb {
