@@ -72,7 +72,6 @@ pub fn run(a: &MeshArgs) -> Result<u8> {
         Method::Dc => mesh_dc(&program, grid, &dc),
     })?;
     progress.finish();
-    let mut warnings = warnings;
     for w in &refined.warnings {
         crate::output::errln!("warning: {}: {w}", a.input.display());
         warnings.push(format!("{}: {w}", a.input.display()));
