@@ -119,7 +119,7 @@ fn without_refinement_losses_are_reported() {
         let stderr = String::from_utf8_lossy(&out.stderr);
         assert!(stderr.contains("warning: "), "{name}: {stderr}");
         // The plate and the spread-out model lose everything at 128 cells: exit 1, not 0.
-        let empty = r["faces"] == Value::from(0);
+        let empty = r["faces"] == 0;
         assert_eq!(out.status.code(), Some(if empty { 1 } else { 0 }), "{name}");
     }
     // The spread model's three parts are all smaller than a cell: nothing is left.
