@@ -97,6 +97,7 @@ pub fn run(a: &MeshArgs) -> Result<u8> {
             ("cells", json!(fine.cells)),
             ("refinement", json!(refined.factor)),
             ("samples_total", json!(refined.samples_total)),
+            ("thin", json!(stats.thin)),
             ("method", json!(a.method.name())),
             ("tolerance", json!(a.tolerance)),
             ("samples_evaluated", json!(stats.samples_evaluated)),

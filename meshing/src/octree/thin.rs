@@ -13,9 +13,10 @@
 //!   candidate;
 //! - each cell around a candidate edge whose eight corners agree is searched: octants whose
 //!   interval (pruned program) cannot rule out the other side are split, down to 1/32 of a cell,
-//!   and their centres evaluated; a point of the other side is a hidden feature. It is *detached*
-//!   when no sample of the 4 × 4 × 4 block around the cell is on its side (a part of the solid,
-//!   or a gap in it, that the mesh loses), *attached* otherwise (a detail of a part the mesh has).
+//!   and their centres evaluated (at most 96 octants); a point of the other side is a *detached*
+//!   feature (a part of the solid, or a gap in it, that the mesh loses). Cells next to a sample
+//!   of the other side (in the 4 × 4 × 4 block around them) are not searched: whatever they hide
+//!   is a detail of a part the mesh has; they are counted as *attached* candidates.
 //!
 //! The counts go into [`ThinCounts`]; [`crate::refine`] decides from them whether to mesh again on
 //! a finer grid. The scan costs a few comparisons per sample where nothing hints at a feature.
@@ -34,7 +35,7 @@ pub const SEARCH_DEPTH: u32 = 5;
 pub const SUBSTANTIAL_DEPTH: u32 = 2;
 
 /// Most octants one cell's search evaluates.
-const SEARCH_BUDGET: usize = 600;
+const SEARCH_BUDGET: usize = 96;
 
 /// What the samples of some bricks say about features the grid cannot hold.
 #[derive(Debug, Clone, Copy, Default, PartialEq, serde::Serialize)]
@@ -43,10 +44,11 @@ pub struct ThinCounts {
     pub surface_samples: u64,
     /// Samples whose two neighbours along some axis are both on the other side.
     pub isolated_samples: u64,
-    /// Cells with agreeing corners that hold a point of the other side, far from any sample of
-    /// that side (a feature the mesh loses).
+    /// Cells with agreeing corners, far from any sample of the other side, that hold a point of
+    /// the other side (a feature the mesh loses).
     pub detached: u64,
-    /// Such cells next to samples of that side (a detail below the cell size).
+    /// Candidate cells next to samples of the other side (not searched: at most a detail below
+    /// the cell size of a part the mesh has).
     pub attached: u64,
     /// Detached features found at a search depth of at most [`SUBSTANTIAL_DEPTH`] (features
     /// that hold a ball of a fifth of the cell or more, not slivers).
@@ -72,13 +74,12 @@ impl ThinCounts {
     }
 
     /// Whether the grid misses or thins features enough to mesh again finer: a substantial
-    /// detached feature (a lost part or gap), or features one cell thick or below it making up
-    /// more than 2% of the surface samples (a few are normal at the tips, sharp edges and
+    /// detached feature (a lost part or gap), or samples one cell thick and lost features making
+    /// up more than 2% of the surface samples (a few are normal at the tips, sharp edges and
     /// intersection curves of any solid; a thin plate or wall has them all along).
     pub fn needs_refinement(&self) -> bool {
         self.detached_substantial > 0
-            || (self.isolated_samples + self.attached + self.detached) * 50
-                > self.surface_samples.max(1)
+            || (self.isolated_samples + self.detached) * 50 > self.surface_samples.max(1)
     }
 }
 
@@ -94,82 +95,157 @@ pub fn scan(
 ) -> ThinCounts {
     let mut counts = ThinCounts::default();
     let stride = [1, n[0], n[0] * n[1]];
-    let ins = |i: usize| values[i] < 0.0;
+    count_layers(values, n, &mut counts);
     let mut searched: Vec<usize> = Vec::new();
-    for k in 0..n[2] {
-        for j in 0..n[1] {
-            for i in 0..n[0] {
-                let at = [i, j, k];
-                let idx = i + stride[1] * j + stride[2] * k;
-                let here = ins(idx);
-                let (mut surface, mut isolated) = (false, false);
-                for a in 0..3 {
-                    let lo = (at[a] > 0).then(|| ins(idx - stride[a]));
-                    let hi = (at[a] + 1 < n[a]).then(|| ins(idx + stride[a]));
-                    surface |= lo == Some(!here) || hi == Some(!here);
-                    isolated |= lo == Some(!here) && hi == Some(!here);
-                    // The edge from here along `a`, with both outer neighbours.
-                    if at[a] == 0 || at[a] + 2 >= n[a] || hi != Some(here) {
+    for a in 0..3 {
+        let (b, d) = ((a + 1) % 3, (a + 2) % 3);
+        if n[a] < 4 {
+            continue;
+        }
+        let s = stride[a];
+        for v in 0..n[d] {
+            for u in 0..n[b] {
+                let start = u * stride[b] + v * stride[d];
+                // Along the line: edges (i, i + 1) with both outer neighbours, i in 1..n − 2.
+                for i in 1..n[a] - 2 {
+                    let idx = start + i * s;
+                    let (f0, f1, f2, f3) = (
+                        values[idx - s],
+                        values[idx],
+                        values[idx + s],
+                        values[idx + 2 * s],
+                    );
+                    let here = f1 < 0.0;
+                    if (f2 < 0.0) != here {
                         continue;
                     }
-                    let f = |o: isize| {
-                        let v = values[(idx as isize + o * stride[a] as isize) as usize];
-                        if here { -v } else { v }
+                    // In the orientation where this side is positive: a dip between f1 and f2.
+                    let (f0, f1, f2, f3) = if here {
+                        (-f0, -f1, -f2, -f3)
+                    } else {
+                        (f0, f1, f2, f3)
                     };
-                    let (f0, f1, f2, f3) = (f(-1), f(0), f(1), f(2));
                     let (sl, sr) = (f1 - f0, f3 - f2);
                     if !(sl < 0.0 && sr > 0.0) {
                         continue;
                     }
-                    // The two slopes extended meet at t (from sample here) with value `low`.
+                    // The two slopes extended meet at t (from sample i) with value `low`.
                     let t = (f2 - f1 - sr) / (sl - sr);
-                    let low = f1 + sl * t;
-                    if low >= 0.0 {
+                    if f1 + sl * t >= 0.0 {
                         continue;
                     }
-                    for c in 0..4 {
-                        let mut cell = at;
-                        let (b, d) = ((a + 1) % 3, (a + 2) % 3);
-                        if c & 1 == 1 {
-                            if cell[b] == 0 {
-                                continue;
-                            }
-                            cell[b] -= 1;
-                        }
-                        if c & 2 == 2 {
-                            if cell[d] == 0 {
-                                continue;
-                            }
-                            cell[d] -= 1;
-                        }
-                        if (0..3).any(|x| cell[x] + 1 >= n[x]) {
-                            continue;
-                        }
-                        let cidx = cell[0] + stride[1] * cell[1] + stride[2] * cell[2];
-                        if searched.contains(&cidx) || !corners_agree(values, cidx, stride, here) {
-                            continue;
-                        }
-                        searched.push(cidx);
-                        counts.cells_searched += 1;
-                        let lo = spec.point(min[0] + cell[0], min[1] + cell[1], min[2] + cell[2]);
-                        let Some((p, depth)) = search(program, lo, spec.cell, here, scratch) else {
-                            continue;
-                        };
-                        if near_other_side(values, cell, n, stride, here) {
-                            counts.attached += 1;
-                        } else {
-                            counts.detached += 1;
-                            counts.detached_substantial += u64::from(depth <= SUBSTANTIAL_DEPTH);
-                            counts.example.get_or_insert(p.to_array());
-                        }
-                    }
+                    let mut at = [0; 3];
+                    at[a] = i;
+                    at[b] = u;
+                    at[d] = v;
+                    candidate(
+                        values,
+                        n,
+                        min,
+                        spec,
+                        program,
+                        scratch,
+                        at,
+                        [a, b, d],
+                        here,
+                        &mut searched,
+                        &mut counts,
+                    );
                 }
-                counts.surface_samples += u64::from(surface);
-                counts.isolated_samples += u64::from(isolated);
             }
         }
     }
     counts
+}
+
+/// Counts surface samples and samples one cell thick, with the inside flags of each row along x
+/// as a bit mask.
+fn count_layers(values: &[f32], n: [usize; 3], counts: &mut ThinCounts) {
+    debug_assert!(n[0] < 32, "rows are 32-bit masks");
+    let rows: Vec<u32> = values
+        .chunks_exact(n[0])
+        .map(|row| {
+            row.iter()
+                .enumerate()
+                .fold(0u32, |m, (i, &v)| m | (u32::from(v < 0.0) << i))
+        })
+        .collect();
+    let full = (1u32 << n[0]) - 1;
+    for k in 0..n[2] {
+        for j in 0..n[1] {
+            let r = j + n[1] * k;
+            let m = rows[r];
+            // Differs from the neighbour below / above along each axis (bits off the grid: 0).
+            let (xlo, xhi) = ((m ^ (m << 1)) & full & !1, (m ^ (m >> 1)) & (full >> 1));
+            let (ylo, yhi) = (
+                if j > 0 { m ^ rows[r - 1] } else { 0 },
+                if j + 1 < n[1] { m ^ rows[r + 1] } else { 0 },
+            );
+            let (zlo, zhi) = (
+                if k > 0 { m ^ rows[r - n[1]] } else { 0 },
+                if k + 1 < n[2] { m ^ rows[r + n[1]] } else { 0 },
+            );
+            let surface = xlo | xhi | ylo | yhi | zlo | zhi;
+            let isolated = (xlo & xhi) | (ylo & yhi) | (zlo & zhi);
+            counts.surface_samples += u64::from(surface.count_ones());
+            counts.isolated_samples += u64::from(isolated.count_ones());
+        }
+    }
+}
+
+/// Searches the cells around the candidate edge from sample `at` along `axes[0]` (whose two
+/// samples are on side `here`).
+#[allow(clippy::too_many_arguments)]
+fn candidate(
+    values: &[f32],
+    n: [usize; 3],
+    min: [usize; 3],
+    spec: &GridSpec,
+    program: &Program,
+    scratch: &mut IntervalScratch,
+    at: [usize; 3],
+    axes: [usize; 3],
+    here: bool,
+    searched: &mut Vec<usize>,
+    counts: &mut ThinCounts,
+) {
+    let stride = [1, n[0], n[0] * n[1]];
+    let [_, b, d] = axes;
+    for c in 0..4 {
+        let mut cell = at;
+        if c & 1 == 1 {
+            if cell[b] == 0 {
+                continue;
+            }
+            cell[b] -= 1;
+        }
+        if c & 2 == 2 {
+            if cell[d] == 0 {
+                continue;
+            }
+            cell[d] -= 1;
+        }
+        if (0..3).any(|x| cell[x] + 1 >= n[x]) {
+            continue;
+        }
+        let cidx = cell[0] + stride[1] * cell[1] + stride[2] * cell[2];
+        if searched.contains(&cidx) || !corners_agree(values, cidx, stride, here) {
+            continue;
+        }
+        searched.push(cidx);
+        if near_other_side(values, cell, n, stride, here) {
+            // A detail of a part the mesh has: not worth a search.
+            counts.attached += 1;
+            continue;
+        }
+        counts.cells_searched += 1;
+        let lo = spec.point(min[0] + cell[0], min[1] + cell[1], min[2] + cell[2]);
+        if let Some((p, depth)) = search(program, lo, spec.cell, here, scratch) {
+            counts.detached += 1;
+            counts.detached_substantial += u64::from(depth <= SUBSTANTIAL_DEPTH);
+            counts.example.get_or_insert(p.to_array());
+        }
+    }
 }
 
 /// Whether the eight corners of the cell at sample index `c` are all on side `here`.
