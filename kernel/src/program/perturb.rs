@@ -24,10 +24,11 @@
 //! one of them, but the point may be a pinch (two balls touching at a point, two cylinders along a
 //! line) rather than a shared face. The solid there is then decided by its regularised meaning:
 //! the point is settled with the solid's interior only if the solid has no exterior point beside
-//! it within the contact plane ([`Program::contact_probe`]: four points `1e-5` of the scale away
-//! along the plane: beyond rounding noise by far, beside a shared face's rim only within that
+//! it, within the contact plane or along one of the 26 lattice directions
+//! ([`Program::contact_probe`]: points `1e-5` of the scale away: beyond rounding noise by far, beside a shared face's rim only within that
 //! distance, and within a third of the interval margin, so pruned programs probe as the full one). A shared face keeps its samples inside (the union is one solid); a pinch takes them
-//! outside (tangent balls stay two shells, as every exact Boolean engine has them); dually for
+//! outside (tangent balls stay two shells, as every exact Boolean engine has them; so do cubes sharing
+//! only an edge); dually for
 //! cavities touching inside a difference.
 //!
 //! The rule reads only the point and the field, so it is the same in every cell, brick and
@@ -162,7 +163,18 @@ impl Program {
         }
         let t1 = n.any_orthonormal_vector();
         let t2 = n.cross(t1);
-        [t1, -t1, t2, -t2].into_iter().any(|t| {
+        // The contact plane (where a pinch of curved operands shows, at second order), then the
+        // 26 lattice directions (where an edge contact of polytopes shows: the empty wedges
+        // between the operands; a shared face has none, every direction off it enters one).
+        let lattice = (0..27).filter(|&i| i != 13).map(|i| {
+            DVec3::new(
+                (i % 3) as f64 - 1.0,
+                (i / 3 % 3) as f64 - 1.0,
+                (i / 9) as f64 - 1.0,
+            )
+            .normalize()
+        });
+        [t1, -t1, t2, -t2].into_iter().chain(lattice).any(|t| {
             let v = self.value_with(p + t * eta, &mut slots);
             if inside { v > noise } else { v < -noise }
         })

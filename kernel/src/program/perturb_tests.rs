@@ -163,3 +163,18 @@ fn point_and_line_contacts_stay_apart() {
     let u = unit_box_at(0.0, 0.0, 0.0).union(&unit_box_at(1.0, 0.0, 0.0));
     assert!(inside(&u, DVec3::new(1.0, 0.001, 0.999)));
 }
+
+#[test]
+fn edge_contacts_stay_apart() {
+    // Two unit cubes sharing only the edge x = y = 1: a sample on the edge is outside.
+    let cubes = unit_box_at(0.0, 0.0, 0.0).union(&unit_box_at(1.0, 1.0, 0.0));
+    let p = DVec3::new(1.0, 1.0, 0.5);
+    assert_eq!(cubes.compile().value(p), 0.0);
+    assert!(!inside(&cubes, p));
+    // Two cubes sharing a face and a third touching one of them along an edge: the face stays
+    // inside, the edge outside.
+    let three = cubes.union(&unit_box_at(1.0, 0.0, 0.0).translate(DVec3::new(0.0, 0.0, 2.0)));
+    assert!(!inside(&three, p));
+    let faces = unit_box_at(0.0, 0.0, 0.0).union(&unit_box_at(1.0, 0.0, 0.0));
+    assert!(inside(&faces, DVec3::new(1.0, 0.5, 0.5)));
+}

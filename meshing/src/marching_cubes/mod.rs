@@ -12,7 +12,7 @@ pub mod table;
 
 pub use grid::{GridError, GridSpec, SampleGrid};
 pub use polygonize::{EDGE_MARGIN, edge_vertex, polygonize_into};
-pub use sign::{INSIDE_ZERO, NOISE, inside, settle, snap_noise};
+pub use sign::{INSIDE_ZERO, NOISE, OUTSIDE_ZERO, inside, settle, snap_noise};
 
 use crate::IndexedMesh;
 use solidkit_kernel::Field;

@@ -11,7 +11,7 @@
 //!    the shared face are inside the union (one of the two fields decreases along the step), and
 //!    the samples on a flush cutter's face are outside the difference (one of the two fields
 //!    increases). A zero settled inside is stored as [`INSIDE_ZERO`], the negative number
-//!    closest to zero in normal precision, so everything downstream (inside test, asymptotic
+//!    closest to zero in normal precision (a zero settled outside as [`OUTSIDE_ZERO`], its mirror), so everything downstream (inside test, asymptotic
 //!    decider, vertex interpolation) reads the sign from the value alone and a vertex on an edge
 //!    from it sits at the sample (kept [`super::EDGE_MARGIN`] away, as for any vertex).
 //!
@@ -32,6 +32,11 @@ pub const NOISE: f32 = 1e-6;
 /// The stored value of a zero sample settled inside (negative, so [`inside`] holds; no field
 /// value can be this small after [`snap_noise`]).
 pub const INSIDE_ZERO: f32 = -f32::MIN_POSITIVE;
+
+/// The stored value of a zero sample settled outside: the smallest positive normal number, the
+/// mirror of [`INSIDE_ZERO`], so the asymptotic decider weighs the two alike (a stored 0 would
+/// lose every product and join the inside diagonal of a face across an edge contact).
+pub const OUTSIDE_ZERO: f32 = f32::MIN_POSITIVE;
 
 /// A sample value with single-precision noise removed: a value within
 /// `NOISE · (1 + max |coordinate|)` of zero is exactly zero. Sample positions are rounded to f32
@@ -58,10 +63,12 @@ pub fn inside(v: f32) -> bool {
 #[inline]
 pub fn settle(x: f32, y: f32, z: f32, v: f32, zero_inside: impl FnOnce(DVec3) -> bool) -> f32 {
     let v = snap_noise(x, y, z, v);
-    if v == 0.0 && zero_inside(DVec3::new(x as f64, y as f64, z as f64)) {
+    if v != 0.0 {
+        v
+    } else if zero_inside(DVec3::new(x as f64, y as f64, z as f64)) {
         INSIDE_ZERO
     } else {
-        v
+        OUTSIDE_ZERO
     }
 }
 
