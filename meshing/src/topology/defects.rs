@@ -92,7 +92,7 @@ mod tests {
 
     #[test]
     fn items_match_the_report_counts() {
-        // An open fin: three triangles on edge 0-1, and one flipped neighbour.
+        // An open fin: three triangles on edge 0-1, and a folded pair on edge 1-2.
         let positions = (0..6)
             .map(|i| DVec3::new(i as f64, (i * i) as f64 * 0.1, (i % 3) as f64))
             .collect();
@@ -105,7 +105,8 @@ mod tests {
         assert_eq!(items.boundary_edges.len(), r.boundary_edges);
         assert_eq!(items.non_manifold_edges.len(), r.non_manifold_edges);
         assert_eq!(items.non_manifold_vertices.len(), r.non_manifold_vertices);
-        assert_eq!(items.non_manifold_edges, vec![[0, 1]]);
+        // Edge 0-1 has three triangles, and so has 1-2 (the triangle 0-1-2 and the pair on 1-2-5).
+        assert_eq!(items.non_manifold_edges, vec![[0, 1], [1, 2]]);
         assert!(!items.is_empty());
     }
 }
