@@ -39,6 +39,9 @@ pub enum Command {
     /// Subdivide a polygon mesh (Catmull-Clark, Loop, butterfly, Doo-Sabin), write it and print
     /// the topology report of the result.
     Subdivide(SubdivideArgs),
+    /// Render a PNG: a solid ray cast from its field, a mesh file rasterised, or a
+    /// cross-section (--section z=C) of a solid.
+    Render(crate::commands::RenderArgs),
 }
 
 /// Arguments of `solidkit subdivide`.
@@ -151,6 +154,9 @@ pub struct MeshArgs {
     /// symbolic link leading out, no absolute paths.
     #[arg(long, value_name = "DIR")]
     pub allow_path: Vec<PathBuf>,
+    /// Also write a PNG of the mesh (iso view, 1024x1024).
+    #[arg(long, value_name = "PNG")]
+    pub preview: Option<PathBuf>,
     /// Mesh again on grids up to this many times finer (1, 2, 4, 8, 16 or 32; 1: never) when
     /// features thinner than a cell are lost or thinned all along the surface.
     #[arg(long, default_value_t = 32, value_parser = parse_refine)]
@@ -202,6 +208,15 @@ pub struct CheckArgs {
     /// Skip the self-intersection count (a self-intersecting mesh then passes).
     #[arg(long)]
     pub no_self_intersections: bool,
+    /// Also write a PNG of the mesh in grey with its defects in colour and a legend.
+    #[arg(long, value_name = "PNG")]
+    pub render: Option<PathBuf>,
+    /// Size WxH of the --render image.
+    #[arg(long, default_value = "1024x1024", value_parser = crate::commands::parse_size)]
+    pub size: solidkit_meshing::render::ImageSize,
+    /// View of the --render image: iso, front, top, side or AZ,EL in degrees.
+    #[arg(long, default_value = "iso", value_parser = crate::commands::parse_view, allow_hyphen_values = true)]
+    pub view: solidkit_meshing::render::View,
 }
 
 /// Arguments of `solidkit compare`.
@@ -287,7 +302,7 @@ fn parse_tolerance(s: &str) -> Result<f64, String> {
     }
 }
 
-fn parse_bounds(s: &str) -> Result<[f64; 6], String> {
+pub(crate) fn parse_bounds(s: &str) -> Result<[f64; 6], String> {
     let parts: Vec<&str> = s.split(',').map(str::trim).collect();
     if parts.len() != 6 {
         return Err(format!(

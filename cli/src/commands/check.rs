@@ -5,8 +5,13 @@ use crate::args::CheckArgs;
 use crate::output::{out, outln};
 use crate::report;
 use anyhow::Result;
+use solidkit_meshing::IndexedMesh;
 use solidkit_meshing::io::read_mesh;
+use solidkit_meshing::render::defects::{defect_camera, render_defects};
+use solidkit_meshing::render::png_out::write_png;
+use solidkit_meshing::topology::DefectItems;
 use solidkit_meshing::{ReportOptions, TopologyReport};
+use std::path::Path;
 
 /// Prints the report; exit code 0 for a closed oriented 2-manifold without self-intersections,
 /// 1 otherwise.
@@ -16,10 +21,28 @@ pub fn run(a: &CheckArgs) -> Result<u8> {
         self_intersections: !a.no_self_intersections,
     };
     let r = TopologyReport::with_options(&mesh, &options);
+    if let Some(path) = &a.render {
+        write_defect_picture(a, &mesh, &options, path)?;
+    }
     if a.json {
         outln!("{}", report::to_json(&r, &[])?)?;
     } else {
         out!("{}", r.to_text())?;
     }
     Ok(if r.is_valid_solid() { 0 } else { 1 })
+}
+
+/// `--render`: the mesh in grey, every defect in its colour, a legend.
+fn write_defect_picture(
+    a: &CheckArgs,
+    mesh: &IndexedMesh,
+    options: &ReportOptions,
+    path: &Path,
+) -> Result<()> {
+    let items = DefectItems::of(mesh, options);
+    let frame = super::render::mesh_box(&mesh.positions);
+    let cam = defect_camera(a.view, &frame, a.size)
+        .map_err(|e| anyhow::anyhow!("{}: {e}", a.mesh.display()))?;
+    write_png(path, &render_defects(mesh, &items, &cam))?;
+    Ok(())
 }

@@ -125,7 +125,20 @@ pub fn run(a: &MeshArgs) -> Result<u8> {
             outln!("wrote: {}", out.display())?;
         }
     }
+    if let Some(path) = &a.preview {
+        write_preview(&mesh, path)?;
+    }
     Ok(u8::from(refined.lost_solid))
+}
+
+/// `--preview`: the mesh written, rasterised (iso view, 1024 x 1024).
+fn write_preview(mesh: &solidkit_meshing::IndexedMesh, path: &std::path::Path) -> Result<()> {
+    use solidkit_meshing::render::{Camera, ImageSize, View, png_out, raster, shade};
+    let frame = super::render::mesh_box(&mesh.positions);
+    let size = ImageSize::new(1024, 1024)?;
+    let cam = Camera::framing(View::Iso, &frame, size)?;
+    png_out::write_png(path, &raster::render_mesh(mesh, &cam, shade::SOLID))?;
+    Ok(())
 }
 
 /// One warning per open mesh operand (edges whose two directions are not used equally often):

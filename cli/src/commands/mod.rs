@@ -6,11 +6,13 @@ mod compare;
 mod convert;
 mod r#gen;
 mod mesh;
+mod render;
 mod subdivide;
 
 use crate::args::Command;
 use anyhow::Result;
 pub use r#gen::GenArgs;
+pub use render::{RenderArgs, parse_size, parse_view};
 
 /// Runs a subcommand; returns the process exit code.
 pub fn run(command: Command) -> Result<u8> {
@@ -23,5 +25,6 @@ pub fn run(command: Command) -> Result<u8> {
         Command::Bench(a) => bench::run(&a),
         Command::BenchCase(a) => bench::run_case(&a),
         Command::Subdivide(a) => subdivide::run(&a),
+        Command::Render(a) => render::run(&a),
     }
 }

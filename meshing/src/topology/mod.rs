@@ -25,6 +25,7 @@
 //! has; [`TopologyReport::with_options`] can skip it (it costs about as much as the rest of the
 //! report together).
 
+mod defects;
 mod edges;
 mod measures;
 mod shells;
@@ -41,6 +42,7 @@ use std::borrow::Cow;
 
 use rayon::prelude::*;
 
+pub use defects::{DefectItems, MAX_DEFECT_PAIRS};
 pub(crate) use edges::{CornerLoops, EdgeKind, EdgeTable};
 pub(crate) use measures::is_usable;
 pub(crate) use vertices::fan_counts;
