@@ -13,6 +13,7 @@ pub mod marching_cubes;
 pub mod measure;
 pub mod octree;
 pub mod refine;
+pub mod repair;
 pub mod sink;
 pub mod subdivision;
 pub mod suites;

@@ -6,6 +6,7 @@ mod compare;
 mod convert;
 mod r#gen;
 mod mesh;
+mod repair;
 mod subdivide;
 
 use crate::args::Command;
@@ -23,5 +24,6 @@ pub fn run(command: Command) -> Result<u8> {
         Command::Bench(a) => bench::run(&a),
         Command::BenchCase(a) => bench::run_case(&a),
         Command::Subdivide(a) => subdivide::run(&a),
+        Command::Repair(a) => repair::run(&a),
     }
 }
