@@ -42,6 +42,47 @@ pub enum Command {
     /// Render a PNG: a solid ray cast from its field, a mesh file rasterised, or a
     /// cross-section (--section z=C) of a solid.
     Render(crate::commands::RenderArgs),
+    /// Repair a mesh into a closed oriented manifold without self-intersections (weld, clean,
+    /// orient, fill holes, split non-manifold vertices; or remesh its winding-number solid),
+    /// write it and print the reports before and after; exit 1 if the result is still not one.
+    Repair(RepairArgs),
+}
+
+/// How `solidkit repair` works.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
+pub enum RepairMode {
+    /// Topological fixes only; no vertex moves further than --weld.
+    Minimal,
+    /// Remesh the winding-number solid by dual contouring.
+    Rebuild,
+    /// Minimal, then rebuild if the result is still not a valid solid.
+    Auto,
+}
+
+/// Arguments of `solidkit repair`.
+#[derive(Debug, clap::Args)]
+pub struct RepairArgs {
+    /// The mesh file (.stl .obj .ply .off).
+    pub mesh: PathBuf,
+    /// Write the repaired mesh here (replaced atomically; nothing is written on bad input).
+    #[arg(short, long)]
+    pub output: PathBuf,
+    /// Repair mode.
+    #[arg(long, value_enum, default_value_t = RepairMode::Auto)]
+    pub mode: RepairMode,
+    /// Weld vertices closer than this (model units; default 1e-6 of the bounding-box diagonal,
+    /// 0 welds equal positions only).
+    #[arg(long, value_parser = parse_weld)]
+    pub weld: Option<f64>,
+    /// Rebuild: grid cells along the longest side (1 to 2048; default 128).
+    #[arg(short, long, value_parser = parse_resolution, conflicts_with = "tolerance")]
+    pub resolution: Option<usize>,
+    /// Rebuild: cell size and dual contouring's collapse tolerance (model units).
+    #[arg(long, value_parser = parse_tolerance)]
+    pub tolerance: Option<f64>,
+    /// Print JSON: {"before", "after", "changes", "rebuild", ...}.
+    #[arg(long)]
+    pub json: bool,
 }
 
 /// Arguments of `solidkit subdivide`.
@@ -299,6 +340,13 @@ fn parse_tolerance(s: &str) -> Result<f64, String> {
     match s.trim().parse::<f64>() {
         Ok(t) if t.is_finite() && t > 0.0 => Ok(t),
         _ => Err(format!("'{s}' is not a positive number")),
+    }
+}
+
+fn parse_weld(s: &str) -> Result<f64, String> {
+    match s.trim().parse::<f64>() {
+        Ok(t) if t.is_finite() && t >= 0.0 => Ok(t),
+        _ => Err(format!("'{s}' is not a number >= 0")),
     }
 }
 

@@ -14,6 +14,7 @@ pub mod measure;
 pub mod octree;
 pub mod refine;
 pub mod render;
+pub mod repair;
 pub mod sink;
 pub mod subdivision;
 pub mod suites;

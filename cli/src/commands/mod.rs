@@ -7,6 +7,7 @@ mod convert;
 mod r#gen;
 mod mesh;
 mod render;
+mod repair;
 mod subdivide;
 
 use crate::args::Command;
@@ -26,5 +27,6 @@ pub fn run(command: Command) -> Result<u8> {
         Command::BenchCase(a) => bench::run_case(&a),
         Command::Subdivide(a) => subdivide::run(&a),
         Command::Render(a) => render::run(&a),
+        Command::Repair(a) => repair::run(&a),
     }
 }

@@ -1,0 +1,168 @@
+//! `solidkit repair`: read a mesh, repair it (minimal, rebuild or auto), write it atomically and
+//! print the reports before and after with the changes per kind.
+
+use crate::args::{MAX_RESOLUTION, RepairArgs, RepairMode};
+use crate::output::{out, outln};
+use anyhow::{Result, anyhow};
+use glam::DVec3;
+use serde_json::{Value, json};
+use solidkit_meshing::io::{read_mesh, write_mesh};
+use solidkit_meshing::repair::{
+    MinimalOptions, RebuildOptions, Rebuilt, RepairCounts, rebuild, repair_minimal,
+};
+use solidkit_meshing::{IndexedMesh, TopologyReport};
+
+/// Default rebuild resolution (cells along the longest side).
+const DEFAULT_RESOLUTION: usize = 128;
+/// Default weld tolerance relative to the bounding-box diagonal.
+const DEFAULT_WELD: f64 = 1e-6;
+/// Samples per mesh for the Hausdorff distance of a rebuild.
+const HAUSDORFF_SAMPLES: usize = 50_000;
+
+/// Repairs, writes and reports; exit 0 when the result is a closed oriented manifold without
+/// self-intersections, 1 otherwise (bad input: an error, exit 2).
+pub fn run(a: &RepairArgs) -> Result<u8> {
+    let name = a.mesh.display().to_string();
+    let input = read_mesh(&a.mesh)?;
+    if input.triangles.is_empty() {
+        return Err(anyhow!("{name}: the mesh has no faces"));
+    }
+    let before = TopologyReport::of(&input);
+    let diagonal = bbox_diagonal(&input);
+    let weld = a.weld.unwrap_or(DEFAULT_WELD * diagonal);
+    // A mesh without any enclosing shell is bad input in every mode.
+    let minimal =
+        repair_minimal(&input, &MinimalOptions { weld }).map_err(|e| anyhow!("{name}: {e}"))?;
+    let minimal_report = TopologyReport::of(&minimal.mesh);
+    let need_rebuild = match a.mode {
+        RepairMode::Minimal => false,
+        RepairMode::Rebuild => true,
+        RepairMode::Auto => !minimal_report.is_valid_solid(),
+    };
+    let rebuilt = if need_rebuild {
+        // The winding-number solid of the cleaned mesh, so flipped shells and holes do not turn
+        // into missing volume; the Hausdorff distance is measured to the input.
+        let (resolution, tolerance) = grid(a, &input);
+        let opts = RebuildOptions {
+            resolution,
+            tolerance,
+            samples: HAUSDORFF_SAMPLES,
+        };
+        Some(rebuild(&minimal.mesh, &input, &opts).map_err(|e| anyhow!("{name}: {e}"))?)
+    } else {
+        None
+    };
+    let (result, after) = match &rebuilt {
+        Some(r) => (&r.mesh, TopologyReport::of(&r.mesh)),
+        None => (&minimal.mesh, minimal_report),
+    };
+    let counts = minimal.counts;
+    let rebuild_json = rebuilt.as_ref().map(|r| rebuild_json(r, diagonal));
+    if a.json {
+        write_mesh(&a.output, result)?;
+        let v = json!({
+            "file": name,
+            "mode": mode_name(a.mode),
+            "weld": weld,
+            "before": serde_json::to_value(&before)?,
+            "changes": serde_json::to_value(counts)?,
+            "rebuilt": rebuilt.is_some(),
+            "rebuild": rebuild_json,
+            "after": serde_json::to_value(&after)?,
+            "valid": after.is_valid_solid(),
+        });
+        outln!("{}", serde_json::to_string_pretty(&v)?)?;
+    } else {
+        outln!("== before: {name}")?;
+        out!("{}", before.to_text())?;
+        out!("{}", changes_text(&counts, weld))?;
+        if let Some(r) = &rebuilt {
+            outln!(
+                "== rebuild: dual contouring, {} x {} x {} cells of {:.6}",
+                r.cells[0],
+                r.cells[1],
+                r.cells[2],
+                r.cell
+            )?;
+            let h = r.hausdorff.symmetric;
+            outln!(
+                "hausdorff to input: {h} ({:.4}% of the bbox diagonal {diagonal})",
+                100.0 * h / diagonal.max(f64::MIN_POSITIVE)
+            )?;
+        }
+        outln!("== after ({})", mode_name(a.mode))?;
+        out!("{}", after.to_text())?;
+        write_mesh(&a.output, result)?;
+        outln!("wrote: {}", a.output.display())?;
+    }
+    Ok(if after.is_valid_solid() { 0 } else { 1 })
+}
+
+/// The rebuild grid: `--resolution`, or cells of `--tolerance` (which also sets dual
+/// contouring's collapse tolerance).
+fn grid(a: &RepairArgs, input: &IndexedMesh) -> (usize, Option<f64>) {
+    match a.tolerance {
+        Some(t) => {
+            let [lo, hi] = bbox(input);
+            let longest = (hi - lo).max_element();
+            let n = (longest / t).ceil().clamp(8.0, MAX_RESOLUTION as f64) as usize;
+            (n, Some(t))
+        }
+        None => (a.resolution.unwrap_or(DEFAULT_RESOLUTION), None),
+    }
+}
+
+fn mode_name(m: RepairMode) -> &'static str {
+    match m {
+        RepairMode::Minimal => "minimal",
+        RepairMode::Rebuild => "rebuild",
+        RepairMode::Auto => "auto",
+    }
+}
+
+fn rebuild_json(r: &Rebuilt, diagonal: f64) -> Value {
+    json!({
+        "cells": r.cells,
+        "cell": r.cell,
+        "hausdorff": r.hausdorff.symmetric,
+        "hausdorff_input_to_result": r.hausdorff.a_to_b.max,
+        "hausdorff_result_to_input": r.hausdorff.b_to_a.max,
+        "relative": r.hausdorff.symmetric / diagonal.max(f64::MIN_POSITIVE),
+    })
+}
+
+/// The non-zero change counts, one per line.
+fn changes_text(c: &RepairCounts, weld: f64) -> String {
+    let mut s = format!("== minimal repair (weld {weld}):\n");
+    let v = serde_json::to_value(c).unwrap_or(Value::Null);
+    let mut any = false;
+    if let Value::Object(map) = v {
+        for (k, x) in map {
+            if x.as_f64().is_some_and(|n| n != 0.0) {
+                s.push_str(&format!("  {k}: {x}\n"));
+                any = true;
+            }
+        }
+    }
+    if !any {
+        s.push_str("  nothing to change\n");
+    }
+    s
+}
+
+fn bbox(mesh: &IndexedMesh) -> [DVec3; 2] {
+    mesh.positions
+        .iter()
+        .fold([DVec3::INFINITY, DVec3::NEG_INFINITY], |[lo, hi], &p| {
+            [lo.min(p), hi.max(p)]
+        })
+}
+
+fn bbox_diagonal(mesh: &IndexedMesh) -> f64 {
+    let [lo, hi] = bbox(mesh);
+    if mesh.positions.is_empty() {
+        0.0
+    } else {
+        lo.distance(hi)
+    }
+}

@@ -1,0 +1,119 @@
+//! Hole filling: boundary loops traced from one-face edges, each closed by spade's constrained
+//! Delaunay triangulation in its best-fit plane when the loop projects to a simple polygon, else
+//! by the minimal-area triangulation of the loop (dynamic programming, up to
+//! [`MAX_DP_EDGES`] edges), else by a fan from its first vertex.
+
+use super::edges::{directed, edge_faces};
+use crate::io::triangulate_polygon;
+use glam::DVec3;
+use std::collections::HashMap;
+
+/// Longest loop triangulated by the cubic minimal-area dynamic programme.
+pub const MAX_DP_EDGES: usize = 400;
+
+/// What the filling did.
+#[derive(Debug, Default)]
+pub(super) struct Filled {
+    pub filled: usize,
+    pub triangles: usize,
+    pub largest: usize,
+    pub open: usize,
+}
+
+/// Fills every boundary loop of the (consistently oriented) faces.
+pub(super) fn fill_holes(positions: &[DVec3], tris: &mut Vec<[u32; 3]>) -> Filled {
+    let map = edge_faces(tris);
+    // Boundary half-edges a → b; the fill must traverse b → a.
+    let mut next: HashMap<u32, Vec<u32>> = HashMap::new();
+    let mut total = 0usize;
+    for t in tris.iter() {
+        for (a, b) in directed(*t) {
+            if map[&super::edges::key(a, b)].len() == 1 {
+                next.entry(a).or_default().push(b);
+                total += 1;
+            }
+        }
+    }
+    let mut out = Filled::default();
+    let mut starts: Vec<u32> = next.keys().copied().collect();
+    starts.sort_unstable();
+    for s in starts {
+        while let Some(first) = next.get_mut(&s).and_then(Vec::pop) {
+            let mut loop_ = vec![s];
+            let mut at = first;
+            let mut closed = false;
+            for _ in 0..=total {
+                if at == s {
+                    closed = true;
+                    break;
+                }
+                loop_.push(at);
+                match next.get_mut(&at).and_then(Vec::pop) {
+                    Some(n) => at = n,
+                    None => break,
+                }
+            }
+            if !closed || loop_.len() < 3 {
+                out.open += 1;
+                continue;
+            }
+            loop_.reverse();
+            let added = triangulate_loop(positions, &loop_, tris);
+            out.filled += 1;
+            out.triangles += added;
+            out.largest = out.largest.max(loop_.len());
+        }
+    }
+    out
+}
+
+/// Triangulates the polygon `corners` (winding kept) into `tris`; returns the triangles added.
+fn triangulate_loop(positions: &[DVec3], corners: &[u32], tris: &mut Vec<[u32; 3]>) -> usize {
+    let before = tris.len();
+    if corners.len() == 3 {
+        tris.push([corners[0], corners[1], corners[2]]);
+    } else if triangulate_polygon(positions, corners, tris).is_err() {
+        if corners.len() <= MAX_DP_EDGES {
+            min_area(positions, corners, tris);
+        } else {
+            for k in 1..corners.len() - 1 {
+                tris.push([corners[0], corners[k], corners[k + 1]]);
+            }
+        }
+    }
+    tris.len() - before
+}
+
+/// The triangulation of the polygon with the least total area (O(n³) dynamic programme over
+/// sub-polygons `i..=j`, filled by increasing length: no recursion).
+pub(super) fn min_area(positions: &[DVec3], corners: &[u32], tris: &mut Vec<[u32; 3]>) {
+    let n = corners.len();
+    let p = |i: usize| positions[corners[i] as usize];
+    let area = |i: usize, k: usize, j: usize| (p(k) - p(i)).cross(p(j) - p(i)).length() * 0.5;
+    let mut cost = vec![0.0f64; n * n];
+    let mut best = vec![0usize; n * n];
+    for len in 2..n {
+        for i in 0..n - len {
+            let j = i + len;
+            let mut c = f64::INFINITY;
+            for k in i + 1..j {
+                let v = cost[i * n + k] + cost[k * n + j] + area(i, k, j);
+                if v < c {
+                    c = v;
+                    best[i * n + j] = k;
+                }
+            }
+            cost[i * n + j] = c;
+        }
+    }
+    let mut stack = vec![(0usize, n - 1)];
+    while let Some((i, j)) = stack.pop() {
+        if j < i + 2 {
+            continue;
+        }
+        let k = best[i * n + j];
+        tris.push([corners[i], corners[k], corners[j]]);
+        stack.push((i, k));
+        stack.push((k, j));
+    }
+}

@@ -1,0 +1,96 @@
+//! Outward orientation per shell. Shells (faces connected through shared vertices) that enclose
+//! no volume are removed (fins, flat sheets closed by hole filling). Each remaining shell is
+//! wound so that its signed volume is positive, or negative when it lies inside an odd number of
+//! other shells (a cavity), tested by the generalised winding number of a vertex.
+
+use super::split::UnionFind;
+use glam::DVec3;
+
+/// Above this many shells the nesting test (quadratic in shells) is skipped: all turn outward.
+pub const MAX_NESTING_SHELLS: usize = 2000;
+
+struct Shell {
+    faces: Vec<usize>,
+    volume: f64,
+    area: f64,
+    lo: DVec3,
+    hi: DVec3,
+}
+
+/// Orients each shell outward (cavities inward) and removes flat shells; returns how many shells
+/// were removed.
+pub(super) fn orient_shells(positions: &[DVec3], tris: &mut Vec<[u32; 3]>) -> usize {
+    let mut uf = UnionFind((0..positions.len() as u32).collect());
+    for t in tris.iter() {
+        uf.union(t[0], t[1]);
+        uf.union(t[1], t[2]);
+    }
+    let mut index_of = std::collections::HashMap::new();
+    let mut shells: Vec<Shell> = Vec::new();
+    for (f, t) in tris.iter().enumerate() {
+        let root = uf.find(t[0]);
+        let s = *index_of.entry(root).or_insert_with(|| {
+            shells.push(Shell {
+                faces: Vec::new(),
+                volume: 0.0,
+                area: 0.0,
+                lo: DVec3::INFINITY,
+                hi: DVec3::NEG_INFINITY,
+            });
+            shells.len() - 1
+        });
+        shells[s].faces.push(f);
+    }
+    for s in &mut shells {
+        let origin = positions[tris[s.faces[0]][0] as usize];
+        for &f in &s.faces {
+            let [a, b, c] = tris[f].map(|i| positions[i as usize]);
+            let (a0, b0, c0) = (a - origin, b - origin, c - origin);
+            s.volume += a0.dot(b0.cross(c0)) / 6.0;
+            s.area += (b - a).cross(c - a).length() * 0.5;
+            s.lo = s.lo.min(a).min(b).min(c);
+            s.hi = s.hi.max(a).max(b).max(c);
+        }
+    }
+    let flat = |s: &Shell| s.volume.abs() <= 1e-9 * s.area.powf(1.5) || s.area == 0.0;
+    let removed = shells.iter().filter(|s| flat(s)).count();
+    shells.retain(|s| !flat(s));
+    let nest = shells.len() <= MAX_NESTING_SHELLS;
+    let mut flip = vec![false; shells.len()];
+    for (i, s) in shells.iter().enumerate() {
+        let mut depth = 0;
+        if nest {
+            let p = positions[tris[s.faces[0]][0] as usize];
+            for (j, t) in shells.iter().enumerate() {
+                let contains_box = t.lo.cmple(s.lo).all() && t.hi.cmpge(s.hi).all();
+                if j != i && contains_box && winding(positions, tris, &t.faces, p).abs() > 0.5 {
+                    depth += 1;
+                }
+            }
+        }
+        let want_positive = depth % 2 == 0;
+        flip[i] = (s.volume > 0.0) != want_positive;
+    }
+    let mut out = Vec::with_capacity(tris.len());
+    for (s, &fl) in shells.iter().zip(&flip) {
+        for &f in &s.faces {
+            let t = tris[f];
+            out.push(if fl { [t[0], t[2], t[1]] } else { t });
+        }
+    }
+    *tris = out;
+    removed
+}
+
+/// The generalised winding number of `faces` at `p` (solid angles, Van Oosterom–Strackee).
+fn winding(positions: &[DVec3], tris: &[[u32; 3]], faces: &[usize], p: DVec3) -> f64 {
+    let mut sum = 0.0;
+    for &f in faces {
+        let [a, b, c] = tris[f].map(|i| positions[i as usize] - p);
+        let (la, lb, lc) = (a.length(), b.length(), c.length());
+        let num = a.dot(b.cross(c));
+        let den = la * lb * lc + a.dot(b) * lc + a.dot(c) * lb + b.dot(c) * la;
+        sum += 2.0 * num.atan2(den);
+    }
+    sum / (4.0 * std::f64::consts::PI)
+}
