@@ -23,8 +23,8 @@
 //! opposite sides (their derivatives along `d` have opposite signs), the step along `d` lands in
 //! one of them, but the point may be a pinch (two balls touching at a point, two cylinders along a
 //! line) rather than a shared face. The solid there is then decided by its regularised meaning:
-//! the point is settled with the solid's interior only if the solid has no exterior point beside
-//! it, within the contact plane or along one of the 26 lattice directions
+//! the point is settled with the solid's interior only if the solid has no exterior points on both
+//! sides of it, along a direction of the contact plane or one of the 13 lattice axes
 //! ([`Program::contact_probe`]: points `1e-5` of the scale away: beyond rounding noise by far, beside a shared face's rim only within that
 //! distance, and within a third of the interval margin, so pruned programs probe as the full one). A shared face keeps its samples inside (the union is one solid); a pinch takes them
 //! outside (tangent balls stay two shells, as every exact Boolean engine has them; so do cubes sharing
@@ -163,10 +163,12 @@ impl Program {
         }
         let t1 = n.any_orthonormal_vector();
         let t2 = n.cross(t1);
-        // The contact plane (where a pinch of curved operands shows, at second order), then the
-        // 26 lattice directions (where an edge contact of polytopes shows: the empty wedges
-        // between the operands; a shared face has none, every direction off it enters one).
-        let lattice = (0..27).filter(|&i| i != 13).map(|i| {
+        // Opposite pairs of directions: the contact plane (where a pinch of curved operands
+        // shows, at second order), then the 13 lattice axes (where an edge contact of polytopes
+        // shows: its empty wedges are opposite). A pinch has the other sign on both sides of
+        // `p` along one of them; a shared face has it on neither (every direction off the face
+        // enters an operand), a corner or seam of the solid's surface on one side only.
+        let lattice = (0..13).map(|i| {
             DVec3::new(
                 (i % 3) as f64 - 1.0,
                 (i / 3 % 3) as f64 - 1.0,
@@ -174,9 +176,13 @@ impl Program {
             )
             .normalize()
         });
-        [t1, -t1, t2, -t2].into_iter().chain(lattice).any(|t| {
+        let mut other = |t: DVec3| {
             let v = self.value_with(p + t * eta, &mut slots);
             if inside { v > noise } else { v < -noise }
-        })
+        };
+        [t1, t2]
+            .into_iter()
+            .chain(lattice)
+            .any(|t| other(t) && other(-t))
     }
 }

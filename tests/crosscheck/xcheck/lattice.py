@@ -225,10 +225,14 @@ def solidkit_result(tree_file: Path, root: dict, resolution: int, timeout: float
     ctx = make_context(root, resolution)
     # solidkit's grid: ceil(extent / cell) cells per axis and a padding cell at each end
     cells = [int(math.ceil(e / ctx.cell - 1e-9)) + 2 for e in ctx.box[1] - ctx.box[0]]
-    if cells != report["cells"]:
+    # Refinement for thin features meshes on a nested grid `refinement` times finer.
+    factor = int(report.get("refinement", 1))
+    if [c * factor for c in cells] != report["cells"]:
         return {"status": "error", "command": " ".join(cmd),
-                "reason": f"grid {report['cells']} is not the {cells} of the bounds {ctx.box} here"}
-    return {"status": "ok", "report": report, "measures": ms, "cell": ctx.cell, "command": " ".join(cmd)}
+                "reason": f"grid {report['cells']} is not {factor} x the {cells} of the bounds "
+                          f"{ctx.box} here"}
+    return {"status": "ok", "report": report, "measures": ms, "cell": ctx.cell / factor,
+            "command": " ".join(cmd)}
 
 
 def has_cylinder(root: dict) -> bool:
