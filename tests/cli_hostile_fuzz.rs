@@ -4,10 +4,11 @@
 //! `--bounds`, open mesh operands), each meshed by the real binary with marching cubes or dual
 //! contouring at a small resolution.
 //!
-//! Every run must end with exit 0 or 2 (never a panic, an abort, a signal or a hang); an error
+//! Every run must end with exit 0 or 2, or 1 with its warning that the mesh is empty (never a panic, an abort, a signal or a hang); an error
 //! ends with one `error:` line; a failed run leaves no output file and a successful one a complete
-//! file. Open or non-manifold results (degenerate primitives such as radii of 5e-324) are counted
-//! and printed but do not fail the test yet (issue 15 asks for 0 of them).
+//! file; an open or non-manifold result must carry the CLI's warning that it may be wrong, and
+//! their number is bounded (parameters beyond 1e-30..1e30 and singular transforms are refused
+//! since issue 15's second round; the known remaining classes are listed at the bound).
 //! The default run (`SOLIDKIT_FUZZ_TREES`, 2000 trees, seed `SOLIDKIT_FUZZ_SEED`) takes well under a
 //! minute on two cores; a long run is `SOLIDKIT_FUZZ_TREES=20000 cargo test --release -p solidkit
 //! --test cli_hostile_fuzz -- --nocapture`. A failing tree is printed whole, to be reduced into
@@ -289,6 +290,10 @@ fn options(r: &mut Rng) -> Vec<String> {
         "--no-progress".to_string(),
         "--no-self-intersections".to_string(),
         "--json".to_string(),
+        // Refinement's own cost is bounded by its budget; a small one keeps each run short
+        // (thin gyroids refine to 32 times finer, millions of triangles, under the default).
+        "--refine-budget".to_string(),
+        "2000000".to_string(),
     ];
     if r.chance(0.5) {
         let (c, mut h) = if r.chance(0.6) {
@@ -368,15 +373,26 @@ fn check_run(
                     "exit 0 but the file has {size} bytes for {}",
                     r["faces"]
                 )),
-                Some(r) => {
-                    if r["faces"] != 0 && (r["closed"] != true || r["manifold"] != true) {
-                        open.fetch_add(1, Ordering::Relaxed);
-                        if std::env::var_os("SOLIDKIT_FUZZ_SHOW_OPEN").is_some() {
-                            eprintln!("open mesh (case {case}): {args:?} {tree}");
-                        }
+                Some(r) if r["faces"] != 0 && (r["closed"] != true || r["manifold"] != true) => {
+                    open.fetch_add(1, Ordering::Relaxed);
+                    if std::env::var_os("SOLIDKIT_FUZZ_SHOW_OPEN").is_some() {
+                        eprintln!("open mesh (case {case}): {args:?} {tree}");
                     }
-                    None
+                    // A result that may be wrong must never be silent: the report has to say so.
+                    let warned = r["warnings"].as_array().is_some_and(|w| {
+                        w.iter().any(|w| {
+                            w.as_str()
+                                .is_some_and(|w| w.contains("the mesh is not a closed manifold"))
+                        })
+                    });
+                    (!warned).then(|| {
+                        format!(
+                            "exit 0 with an open or non-manifold mesh ({} boundary edges) and no warning",
+                            r["boundary_edges"]
+                        )
+                    })
                 }
+                Some(_) => None,
             }
         }
         Some(Some(2))
@@ -387,6 +403,9 @@ fn check_run(
         }
         Some(Some(2)) if output.exists() => Some("exit 2 but an output file was written".into()),
         Some(Some(2)) => None,
+        // Exit 1: the solid meshes empty though the feature search found its inside (a warning
+        // says so); refinement stopped by its budget.
+        Some(Some(1)) if err.contains("but the mesh is empty") && !err.contains("panicked") => None,
         Some(Some(code)) => Some(format!("exit {code}: {err}")),
     };
     let _ = std::fs::remove_file(&output);
@@ -444,13 +463,14 @@ fn random_extreme_trees_never_panic_hang_or_leave_partial_files() {
         h.join().unwrap();
     }
     let failures = failures.lock().unwrap();
+    let open = open.load(Ordering::Relaxed);
     eprintln!(
-        "fuzz: {trees} trees (seed {seed}) in {:.1} s, {} failures, {} open or non-manifold \
-         meshes (not yet an error; SOLIDKIT_FUZZ_SHOW_OPEN=1 lists them)",
+        "fuzz: {trees} trees (seed {seed}) in {:.1} s, {} failures, {open} open or non-manifold \
+         meshes, each with a warning (SOLIDKIT_FUZZ_SHOW_OPEN=1 lists them)",
         start.elapsed().as_secs_f64(),
         failures.len(),
-        open.load(Ordering::Relaxed)
     );
+    assert!(failures.is_empty(), "{}", failures.join("\n"));
     // Nothing else (temporary files) may be left in the folder.
     let mut left: Vec<String> = std::fs::read_dir(dir.path())
         .unwrap()
@@ -459,5 +479,12 @@ fn random_extreme_trees_never_panic_hang_or_leave_partial_files() {
         .collect();
     left.sort();
     assert!(left.is_empty(), "files left behind: {left:?}");
-    assert!(failures.is_empty(), "{}", failures.join("\n"));
+    // The known open classes (offsets and shells of bound fields leaving their boxes, blobs with
+    // extreme parameters; see issue 15) come with a warning. They were 8 in 2000 trees with the
+    // default seed when this bound was set: more means a regression, fewer a fix (lower it).
+    let limit = env_number("SOLIDKIT_FUZZ_MAX_OPEN_PER_MILLE", 6) as usize;
+    assert!(
+        open * 1000 <= limit * trees.max(1),
+        "{open} open or non-manifold meshes in {trees} trees (at most {limit} per mille expected)"
+    );
 }

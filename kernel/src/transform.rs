@@ -54,6 +54,13 @@ pub enum TransformError {
     /// The linear part is singular (e.g. a zero scale factor) or numerically so.
     #[error("transform is singular (its linear part cannot be inverted)")]
     Singular,
+    /// Scales by less than 1e-30 or more than 1e30, or moves by more than 1e30: beyond the range
+    /// that single-precision evaluation handles faithfully.
+    #[error(
+        "transform scales by less than 1e-30 or more than 1e30, or moves by more than 1e30 \
+         (beyond that range single-precision evaluation is not faithful)"
+    )]
+    OutOfRange,
 }
 
 impl TransformSpec {
@@ -97,6 +104,13 @@ impl Transform {
         if smin.is_nan() || smin <= 0.0 || smin <= smax * 1e-12 {
             return Err(TransformError::Singular);
         }
+        let far = forward.translation.abs().max_element();
+        if smin < crate::primitive::MIN_MAGNITUDE
+            || smax > crate::primitive::MAX_MAGNITUDE
+            || far > crate::primitive::MAX_MAGNITUDE
+        {
+            return Err(TransformError::OutOfRange);
+        }
         Ok(Self {
             spec,
             forward,
@@ -120,10 +134,26 @@ fn outer(a: DVec3, b: DVec3) -> DMat3 {
     DMat3::from_cols(a * b.x, a * b.y, a * b.z)
 }
 
-/// Smallest and largest singular values of a 3 × 3 matrix, from the eigenvalues of `AᵀA`.
+/// Smallest and largest singular values of a 3 × 3 matrix. The largest is the square root of the
+/// largest eigenvalue of `AᵀA` (accurate relative to itself); the smallest is the reciprocal of
+/// the largest singular value of `A⁻¹` (0 when `A` is singular). The smallest eigenvalue of
+/// `AᵀA` is only accurate to `ε·σ_max²`: for an ill-conditioned matrix (a zero row beside an entry
+/// of 6·10¹⁹, issue 15) it reported σ_min ≈ 10¹², so a singular map passed validation and scaled
+/// the field by far more than a distance bound allows (open meshes).
 pub fn singular_value_range(a: DMat3) -> (f64, f64) {
-    let ev = symmetric_eigenvalues(a.transpose() * a);
-    (ev[0].max(0.0).sqrt(), ev[2].max(0.0).sqrt())
+    let largest = |m: DMat3| symmetric_eigenvalues(m.transpose() * m)[2].max(0.0).sqrt();
+    let hi = largest(a);
+    let det = a.determinant();
+    if det == 0.0 || !det.is_finite() {
+        return (0.0, hi);
+    }
+    let inverse_hi = largest(a.inverse());
+    let lo = if inverse_hi.is_finite() && inverse_hi > 0.0 {
+        1.0 / inverse_hi
+    } else {
+        0.0
+    };
+    (lo.min(hi), hi)
 }
 
 /// Eigenvalues of a symmetric 3 × 3 matrix in ascending order (trigonometric closed form).

@@ -84,6 +84,20 @@ pub fn run(a: &MeshArgs) -> Result<u8> {
     let report_start = Instant::now();
     let r = TopologyReport::with_options(&mesh, &options);
     let report_s = report_start.elapsed().as_secs_f64();
+    // The mesher's output is closed and manifold by construction when the field's samples and
+    // interval bounds agree; where they do not (parameters near the limits of floating point),
+    // the result may be wrong and must not be silent.
+    if r.faces > 0 && !(r.closed && r.manifold) {
+        let w = format!(
+            "{}: the mesh is not a closed manifold ({} boundary edges, {} non-manifold edges, {} non-manifold vertices): the field could not be evaluated faithfully everywhere, so the result may be wrong",
+            a.input.display(),
+            r.boundary_edges,
+            r.non_manifold_edges,
+            r.non_manifold_vertices
+        );
+        crate::output::errln!("warning: {}", crate::escape::one_line(&w));
+        warnings.push(w);
+    }
     // The text report goes out before the file is written, so a closed or full standard output
     // (exit 2) leaves an existing output file untouched; JSON only follows a written file.
     if a.json {

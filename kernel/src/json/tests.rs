@@ -6,7 +6,11 @@ use glam::DVec3;
 fn every_node() -> Solid {
     Solid::union_all([
         Solid::sphere(0.1 + 0.2),
-        Solid::cuboid(DVec3::new(1.0, 2.0, 1e-7)).translate(DVec3::new(-1.5, 0.0, 1e300)),
+        Solid::cuboid(DVec3::new(1.0, 2.0, 1e-7)).translate(DVec3::new(
+            -1.5,
+            0.0,
+            1.234_567_890_123e29,
+        )),
         Solid::cylinder(0.5, 2.0).rotate(DVec3::new(1.0, 1.0, 0.0), 33.3),
         Solid::cone(1.0, 0.0, 2.0).scale(DVec3::new(1.0, 2.0, 3.0)),
         Solid::torus(1.0, 0.25).mirror(DVec3::Y),

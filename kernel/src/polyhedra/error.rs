@@ -9,8 +9,9 @@ pub enum PolyhedronError {
     /// There are no faces.
     #[error("the polyhedron has no faces")]
     NoFaces,
-    /// A vertex has a NaN or infinite coordinate.
-    #[error("vertex {vertex} has a non-finite coordinate")]
+    /// A vertex has a NaN or infinite coordinate (or, in a mesh solid, one beyond
+    /// [`crate::primitive::MAX_MAGNITUDE`]).
+    #[error("vertex {vertex} has a non-finite coordinate or one beyond ±1e30")]
     NonFiniteVertex {
         /// The vertex index.
         vertex: usize,

@@ -39,8 +39,17 @@ impl Cone {
         let (a, b) = (DVec2::new(r1, -h), DVec2::new(r2, h));
         let ab = b - a;
         let t = ((q - a).dot(ab) / ab.length_squared()).clamp(0.0, 1.0);
-        let c = a + ab * t;
-        let d = (q - c).length();
+        // Between the ends, the distance to the side line by projection on its unit normal:
+        // stable for any height. (`|q − (a + t·ab)|` cancels catastrophically when the height
+        // dwarfs the radii: errors of ε·h, 10⁴ at h = 10²⁰, broke meshes in issue 15.)
+        let (d, c) = if t > 0.0 && t < 1.0 {
+            let n = DVec2::new(ab.y, -ab.x) / ab.length();
+            let s = (q - a).dot(n);
+            (s.abs(), q - n * s)
+        } else {
+            let c = a + ab * t;
+            ((q - c).length(), c)
+        };
         if d < best.0 {
             best = (d, c, DVec2::new(ab.y, -ab.x).normalize());
         }

@@ -90,7 +90,28 @@ pub struct PrimitiveError {
     pub problem: &'static str,
 }
 
-/// Checks that `x` is a finite number greater than zero.
+/// Largest magnitude of a primitive's length, size or coordinate parameter. Samples are evaluated
+/// in single precision (largest finite `f32` about 3.4·10³⁸) and primitives square or divide by
+/// their parameters, so beyond this the evaluators overflow, cancel catastrophically or disagree
+/// with the interval bounds (open meshes from seemingly valid trees, issue 15).
+pub const MAX_MAGNITUDE: f64 = 1e30;
+
+/// Smallest magnitude of a non-zero primitive parameter: below it reciprocals overflow single
+/// precision and products underflow to zero (subnormal radii gave NaN samples, issue 15). Such a
+/// feature lies far below any grid cell the mesher accepts, so nothing meshable is lost.
+pub const MIN_MAGNITUDE: f64 = 1e-30;
+
+/// Whether `x` is zero or a finite number whose magnitude lies in
+/// [`MIN_MAGNITUDE`]`..=`[`MAX_MAGNITUDE`]: a parameter every evaluator handles faithfully.
+pub fn faithful(x: f64) -> bool {
+    x == 0.0 || (MIN_MAGNITUDE..=MAX_MAGNITUDE).contains(&x.abs())
+}
+
+/// The problem with a finite `x` outside the faithful range.
+const OUT_OF_RANGE: &str = "expected 0 or a magnitude between 1e-30 and 1e30 (beyond that range \
+                            single-precision evaluation is not faithful)";
+
+/// Checks that `x` is a finite number greater than zero, within the faithful range.
 pub(crate) fn positive(parameter: &'static str, x: f64) -> Result<(), PrimitiveError> {
     if !x.is_finite() {
         Err(PrimitiveError {
@@ -102,12 +123,17 @@ pub(crate) fn positive(parameter: &'static str, x: f64) -> Result<(), PrimitiveE
             parameter,
             problem: "expected a positive number",
         })
+    } else if !faithful(x) {
+        Err(PrimitiveError {
+            parameter,
+            problem: OUT_OF_RANGE,
+        })
     } else {
         Ok(())
     }
 }
 
-/// Checks that `x` is a finite number not below zero.
+/// Checks that `x` is a finite number not below zero, zero or within the faithful range.
 pub(crate) fn non_negative(parameter: &'static str, x: f64) -> Result<(), PrimitiveError> {
     if !x.is_finite() {
         Err(PrimitiveError {
@@ -118,6 +144,11 @@ pub(crate) fn non_negative(parameter: &'static str, x: f64) -> Result<(), Primit
         Err(PrimitiveError {
             parameter,
             problem: "expected a number not below zero",
+        })
+    } else if !faithful(x) {
+        Err(PrimitiveError {
+            parameter,
+            problem: OUT_OF_RANGE,
         })
     } else {
         Ok(())

@@ -253,7 +253,10 @@ fn triangulate_faces(
     if faces.is_empty() {
         return Err(PolyhedronError::NoFaces.into());
     }
-    if let Some(vertex) = vertices.iter().position(|v| !v.is_finite()) {
+    if let Some(vertex) = vertices
+        .iter()
+        .position(|v| !v.is_finite() || v.abs().max_element() > crate::primitive::MAX_MAGNITUDE)
+    {
         return Err(PolyhedronError::NonFiniteVertex { vertex }.into());
     }
     let mut triangles = Vec::with_capacity(faces.len());

@@ -196,8 +196,15 @@ fn bad_meshes_are_errors_and_do_not_panic() {
     assert!(e.to_string().contains("vertex 2"), "{e}");
     let mesh = IndexedMesh::new(vec![DVec3::ZERO, DVec3::X, DVec3::NAN], vec![[0, 1, 2]]);
     assert!(MeshSolid::from_mesh(&mesh).is_err());
-    // Huge, tiny, degenerate and single-triangle meshes build and answer queries.
-    for scale in [1e300, 1e-300, 0.0] {
+    // Coordinates beyond ±1e30 are refused (single-precision evaluation overflows, issue 15).
+    let huge = IndexedMesh::new(
+        vec![DVec3::ZERO, DVec3::X * 1e300, DVec3::Y],
+        vec![[0, 1, 2]],
+    );
+    let e = MeshSolid::from_mesh(&huge).unwrap_err();
+    assert!(e.to_string().contains("beyond ±1e30"), "{e}");
+    // Tiny, degenerate and single-triangle meshes build and answer queries.
+    for scale in [1e-300, 0.0] {
         let tri = IndexedMesh::new(
             vec![
                 DVec3::ZERO,

@@ -52,7 +52,10 @@ impl MeshTree {
             if let Some(&index) = t.iter().find(|&&i| i as usize >= count) {
                 return Err(PolyhedronError::IndexOutOfRange { face, index, count });
             }
-            if let Some(&vertex) = t.iter().find(|&&i| !mesh.positions[i as usize].is_finite()) {
+            if let Some(&vertex) = t.iter().find(|&&i| {
+                let v = mesh.positions[i as usize];
+                !v.is_finite() || v.abs().max_element() > crate::primitive::MAX_MAGNITUDE
+            }) {
                 let vertex = vertex as usize;
                 return Err(PolyhedronError::NonFiniteVertex { vertex });
             }
