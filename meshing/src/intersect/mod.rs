@@ -34,6 +34,8 @@ mod triangles;
 
 #[cfg(test)]
 mod tests;
+#[cfg(test)]
+mod tests_reference;
 
 use rayon::prelude::*;
 
