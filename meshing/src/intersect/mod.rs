@@ -1,44 +1,53 @@
 //! Self-intersections of a triangle mesh: the pairs of triangles that meet beyond the vertices
 //! they share.
 //!
-//! Broad phase: every triangle queries the bounding volume hierarchy of the mesh
-//! ([`TriangleTree`], the kernel's BVH built on obvhs) for triangles of higher index whose boxes
-//! meet its own, in parallel (rayon) over chunks of the tree's leaf order. Narrow phase: exact
-//! triangle–triangle tests on orientation predicates, with neighbours (shared vertex or edge)
-//! counted only when they meet beyond what they share (a fold-back, a coplanar overlap); see
-//! `triangles.rs`.
+//! Broad phase (`morton.rs`): the triangles' boxes, rounded outwards to `f32`, sorted along a
+//! Morton curve and grouped under an implicit tree; every leaf queries the leaves at or after it,
+//! in parallel (rayon), and the narrow phase reads the triangles in that curve order. Narrow
+//! phase: exact triangle–triangle tests on orientation predicates, with neighbours (shared
+//! vertex or edge) counted only when they meet beyond what they share (a fold-back, a coplanar
+//! overlap); see `triangles.rs`.
 //! Plain floating-point separation tests with a safe margin (`filter.rs`) settle most pairs
 //! before any exact predicate: in flat regions neighbours are exactly coplanar, and an exact
 //! zero is the slowest case of adaptive predicates.
 //! Touching counts as meeting. Sharing means sharing a vertex index: two distinct vertices at
 //! the same position (an unwelded seam) touch, so their triangles count. Exactly collinear
-//! triangles are skipped (they are degenerate faces); triangles with unusable indices are not in
-//! the tree.
+//! triangles are skipped (they are degenerate faces); triangles with unusable indices are left
+//! out.
 //!
-//! The count and the examples (the smallest pairs) do not depend on the thread count.
+//! The count and the examples (the smallest pairs) do not depend on the thread count, and are
+//! those of the first implementation over the kernel's BVH (kept as `reference.rs` for the tests).
 //!
-//! Repeated triangles (the same three vertex indices, in any order) are tested once: only the
-//! lowest-index copy takes part in the search, a pair of copies always meets (they share all
-//! three vertices) and every pair found for a representative stands for all pairs of the copies
-//! of both. So a file of 40 000 coincident triangles costs one test, not 8 · 10⁸, while the count
-//! and the examples stay those of the pairwise definition.
+//! Repeated triangles (the same three vertex indices, in any order) are tested once
+//! (`copies.rs`): only the lowest-index copy takes part in the search, a pair of copies always
+//! meets (they share all three vertices) and every pair found for a representative stands for
+//! all pairs of the copies of both. So a file of 40 000 coincident triangles costs one test, not
+//! 8 · 10⁸, while the count and the examples stay those of the pairwise definition.
 
+mod copies;
 mod filter;
+mod morton;
 mod predicates;
+#[cfg(test)]
+mod reference;
 mod triangles;
 
 #[cfg(test)]
 mod tests;
+#[cfg(test)]
+mod tests_reference;
 
 use rayon::prelude::*;
-use std::collections::HashMap;
 
 use crate::IndexedMesh;
-use crate::measure::{MeasureError, TriangleTree};
+use crate::measure::MeasureError;
+use crate::topology::is_usable;
+use copies::Copies;
+use morton::{Box32, LEAF, LeafTree, curve_order};
 use triangles::{Tri, meet_beyond_shared};
 
-/// Tree leaves per parallel work item.
-const CHUNK: usize = 1 << 10;
+/// Leaves per parallel work item.
+const CHUNK: usize = 1 << 8;
 
 /// The intersecting triangle pairs of a mesh.
 #[derive(Debug, Clone, Default, PartialEq, Eq)]
@@ -67,167 +76,145 @@ pub fn self_intersections(
     mesh: &IndexedMesh,
     limit: usize,
 ) -> Result<SelfIntersections, MeasureError> {
-    let tree = match TriangleTree::new(mesh) {
-        Ok(tree) => tree,
-        Err(MeasureError::NoSurface) => return Ok(SelfIntersections::default()),
-        Err(e) => return Err(e),
-    };
-    let n = tree.triangle_count();
-    let mut tris: Vec<Option<Tri>> = (0..n)
+    let n = mesh.positions.len();
+    if mesh.triangles.len() > u32::MAX as usize {
+        return Err(MeasureError::TooLarge {
+            count: mesh.triangles.len(),
+        });
+    }
+    let ids: Vec<u32> = (0..mesh.triangles.len() as u32)
         .into_par_iter()
-        .map(|s| Tri::new(tree.slot_corners(s)))
+        .filter(|&t| is_usable(&mesh.triangles[t as usize], n))
         .collect();
-    let copies = Copies::find(&tree, mesh, &mut tris, limit);
-    let leaves = tree.bvh().leaves();
-    let total = leaves
-        .par_chunks(CHUNK)
-        .map_init(Scratch::default, |scratch, chunk| {
-            let mut found = SelfIntersections::default();
-            for leaf in chunk {
-                let leaf = leaf.clone();
-                leaf_pairs(
-                    &tree, mesh, &tris, &copies, leaf, scratch, &mut found, limit,
-                );
-            }
-            found
+    // The first non-finite corner in triangle order, as the error.
+    let bad = ids.par_iter().find_map_first(|&t| {
+        let tri = mesh.triangles[t as usize];
+        (0..3)
+            .find(|&k| !mesh.positions[tri[k] as usize].is_finite())
+            .map(|k| tri[k] as usize)
+    });
+    if let Some(vertex) = bad {
+        return Err(MeasureError::NonFiniteVertex { vertex });
+    }
+    let tris: Vec<Option<Tri>> = ids
+        .par_iter()
+        .map(|&t| Tri::new(mesh.triangle_positions(t as usize)))
+        .collect();
+    let mut keep: Vec<bool> = tris.par_iter().map(Option::is_some).collect();
+    let keys: Vec<[u32; 3]> = ids
+        .par_iter()
+        .map(|&t| {
+            let mut key = mesh.triangles[t as usize];
+            key.sort_unstable();
+            key
         })
-        .collect::<Vec<_>>()
-        .into_iter()
-        .fold(copies.among_themselves(limit), |a, b| a.absorb(b, limit));
-    Ok(total)
+        .collect();
+    let copies = Copies::find(&ids, &keys, &mut keep, n, limit);
+    drop(keys);
+    // The representatives, in curve order.
+    let active: Vec<usize> = (0..ids.len()).filter(|&k| keep[k]).collect();
+    let boxes: Vec<Box32> = active
+        .par_iter()
+        .map(|&k| {
+            let [a, b, c] = tris[k].map_or([glam::DVec3::ZERO; 3], |t| t.p);
+            Box32::outward(a.min(b).min(c).to_array(), a.max(b).max(c).to_array())
+        })
+        .collect();
+    let order = curve_order(&boxes);
+    let items: Vec<Item> = order
+        .par_iter()
+        .filter_map(|&o| {
+            let k = active[o as usize];
+            let id = ids[k];
+            tris[k].map(|tri| Item {
+                id,
+                vertices: mesh.triangles[id as usize],
+                tri,
+            })
+        })
+        .collect();
+    let boxes: Vec<Box32> = order.par_iter().map(|&o| boxes[o as usize]).collect();
+    drop((tris, active, order));
+    let tree = LeafTree::new(&boxes);
+    let total = (0..tree.leaf_count())
+        .into_par_iter()
+        .with_min_len(CHUNK)
+        .fold(
+            || (Scratch::default(), SelfIntersections::default()),
+            |(mut scratch, mut found), leaf| {
+                leaf_pairs(
+                    &tree,
+                    &items,
+                    &boxes,
+                    &copies,
+                    leaf,
+                    &mut scratch,
+                    &mut found,
+                    limit,
+                );
+                (scratch, found)
+            },
+        )
+        .map(|(_, found)| found)
+        .reduce(SelfIntersections::default, |a, b| a.absorb(b, limit));
+    Ok(copies.among_themselves(limit).absorb(total, limit))
 }
 
-/// The groups of repeated triangles, by their representative (lowest index).
-#[derive(Debug, Default)]
-struct Copies {
-    /// Representative → (number of copies, the `limit + 1` lowest indices, ascending).
-    groups: HashMap<u32, (usize, Vec<u32>)>,
-}
-
-impl Copies {
-    /// Groups the usable triangles by their vertex set and removes all but the representative
-    /// of each group from `tris`.
-    fn find(
-        tree: &TriangleTree,
-        mesh: &IndexedMesh,
-        tris: &mut [Option<Tri>],
-        limit: usize,
-    ) -> Self {
-        let mut by_key: HashMap<[u32; 3], Vec<(u32, usize)>> = HashMap::new();
-        for (slot, tri) in tris.iter().enumerate() {
-            if tri.is_some() {
-                let i = tree.slot_triangle(slot);
-                let mut key = mesh.triangles[i as usize];
-                key.sort_unstable();
-                by_key.entry(key).or_default().push((i, slot));
-            }
-        }
-        let mut groups = HashMap::new();
-        for mut members in by_key.into_values().filter(|m| m.len() > 1) {
-            members.sort_unstable();
-            for &(_, slot) in &members[1..] {
-                tris[slot] = None;
-            }
-            // `limit + 1`: the smallest pairs among copies are the first with the next `limit`.
-            let first = members.iter().take(limit + 1).map(|&(i, _)| i).collect();
-            groups.insert(members[0].0, (members.len(), first));
-        }
-        Self { groups }
-    }
-
-    /// How many triangles `i` stands for, and the lowest of their indices (none listed for a
-    /// triangle without copies: it stands for itself).
-    fn of(&self, i: u32) -> (usize, &[u32]) {
-        match self.groups.get(&i) {
-            Some((count, first)) => (*count, first),
-            None => (1, &[]),
-        }
-    }
-
-    /// The pairs of copies of one triangle: they share all three vertices, so they meet.
-    fn among_themselves(&self, limit: usize) -> SelfIntersections {
-        let mut found = SelfIntersections::default();
-        for (count, first) in self.groups.values() {
-            found.count += count * (count - 1) / 2;
-            for (a, &i) in first.iter().enumerate() {
-                found
-                    .examples
-                    .extend(first[a + 1..].iter().map(|&j| [i, j]));
-            }
-        }
-        found.examples.sort_unstable();
-        found.examples.truncate(limit);
-        found
-    }
+/// A triangle taking part in the search.
+#[derive(Debug, Clone, Copy)]
+struct Item {
+    /// Index into the mesh's triangles.
+    id: u32,
+    /// Its vertex indices.
+    vertices: [u32; 3],
+    /// Its corners.
+    tri: Tri,
 }
 
 /// Reusable buffers of one worker.
 #[derive(Debug, Default)]
 struct Scratch {
-    candidates: Vec<usize>,
+    stack: Vec<(u8, u32)>,
+    leaves: Vec<u32>,
     hits: Vec<[u32; 2]>,
 }
 
-/// Adds the intersecting pairs of the triangles in one leaf with higher-index triangles: one tree
-/// query for the leaf's box, then the candidates per triangle.
+/// Adds the intersecting pairs of the triangles in leaf `leaf` with those of the same or later
+/// leaves (later slots within the same leaf).
 #[allow(clippy::too_many_arguments)]
 fn leaf_pairs(
-    tree: &TriangleTree,
-    mesh: &IndexedMesh,
-    tris: &[Option<Tri>],
+    tree: &LeafTree,
+    items: &[Item],
+    boxes: &[Box32],
     copies: &Copies,
-    leaf: std::ops::Range<usize>,
+    leaf: usize,
     scratch: &mut Scratch,
     found: &mut SelfIntersections,
     limit: usize,
 ) {
-    let Some(leaf_box) = leaf
-        .clone()
-        .filter(|&s| tris[s].is_some())
-        .map(|s| triangle_box(tree.slot_corners(s)))
-        .reduce(|[l0, h0], [l1, h1]| [l0.min(l1), h0.max(h1)])
-    else {
-        return;
-    };
-    let Scratch { candidates, hits } = scratch;
-    candidates.clear();
-    let [leaf_lo, leaf_hi] = leaf_box;
-    tree.bvh().for_each_overlap(leaf_lo, leaf_hi, |other| {
-        if tris[other].is_some() {
-            candidates.push(other);
-        }
-    });
+    let Scratch {
+        stack,
+        leaves,
+        hits,
+    } = scratch;
+    leaves.clear();
+    tree.leaves_after(leaf, &tree.leaf_box(leaf), stack, leaves);
     hits.clear();
-    for slot in leaf {
-        let Some(tri) = &tris[slot] else { continue };
-        let i = tree.slot_triangle(slot);
-        let ti = mesh.triangles[i as usize];
-        let [lo, hi] = triangle_box(tri.p);
-        for &other in candidates.iter() {
-            let j = tree.slot_triangle(other);
-            if j <= i {
-                continue;
-            }
-            let [l, h] = triangle_box(tree.slot_corners(other));
-            if !(l.cmple(hi).all() && lo.cmple(h).all()) {
-                continue;
-            }
-            if let Some(trj) = &tris[other]
-                && meet_beyond_shared(ti, tri, mesh.triangles[j as usize], trj)
-            {
-                if copies.groups.is_empty() {
-                    found.count += 1;
-                    hits.push([i, j]);
-                } else {
-                    // Every copy of one meets every copy of the other.
-                    let ((ci, fi), (cj, fj)) = (copies.of(i), copies.of(j));
-                    let (single_i, single_j) = ([i], [j]);
-                    let fi = if fi.is_empty() { &single_i[..] } else { fi };
-                    let fj = if fj.is_empty() { &single_j[..] } else { fj };
-                    found.count += ci * cj;
-                    for &a in fi {
-                        hits.extend(fj.iter().map(|&b| [a.min(b), a.max(b)]));
-                    }
+    let own = leaf * LEAF..((leaf + 1) * LEAF).min(items.len());
+    for a in own {
+        let (ia, ba) = (&items[a], &boxes[a]);
+        for &other in leaves.iter() {
+            let other = other as usize;
+            let from = if other == leaf { a + 1 } else { other * LEAF };
+            for b in from..((other + 1) * LEAF).min(items.len()) {
+                if !ba.meets(&boxes[b]) {
+                    continue;
+                }
+                let ib = &items[b];
+                // Lower index first, as the pairwise definition reads.
+                let (x, y) = if ia.id < ib.id { (ia, ib) } else { (ib, ia) };
+                if meet_beyond_shared(x.vertices, &x.tri, y.vertices, &y.tri) {
+                    copies.add_pair(ia.id, ib.id, &mut found.count, hits);
                 }
             }
         }
@@ -237,9 +224,4 @@ fn leaf_pairs(
         found.examples.sort_unstable();
         found.examples.truncate(limit);
     }
-}
-
-/// The box `[min, max]` of a triangle.
-fn triangle_box([a, b, c]: [glam::DVec3; 3]) -> [glam::DVec3; 2] {
-    [a.min(b).min(c), a.max(b).max(c)]
 }

@@ -25,6 +25,7 @@ mod bytes;
 mod error;
 mod faces;
 mod glb;
+mod key_hash;
 mod obj;
 mod obj_scan;
 mod off;
@@ -38,6 +39,7 @@ mod stored;
 mod text;
 mod threemf;
 mod weld;
+mod weld_parallel;
 mod zip;
 
 #[cfg(test)]

@@ -10,10 +10,12 @@
 use std::io::{self, Write};
 
 use glam::{DVec3, Vec3};
+use rayon::prelude::*;
 
 use super::bytes::{ByteCursor, Endian};
 use super::text::{Tokens, parse_coordinate, parse_f64, show};
 use super::weld::Welder;
+use super::weld_parallel;
 use super::{Encoding, Location, MeshIoError};
 use crate::IndexedMesh;
 
@@ -81,7 +83,44 @@ fn size_mismatch(count: u32, len: u64, name: &str) -> MeshIoError {
     }
 }
 
-fn read_binary(bytes: &[u8], count: u32, name: &str) -> Result<IndexedMesh, MeshIoError> {
+/// Binary STL, decoded and welded in parallel ([`weld_parallel`]); a file with a non-finite
+/// coordinate goes to the serial reader, which names the first one.
+pub(super) fn read_binary(
+    bytes: &[u8],
+    count: u32,
+    name: &str,
+) -> Result<IndexedMesh, MeshIoError> {
+    let records = bytes
+        .get(PREAMBLE_LEN as usize..)
+        .unwrap_or_default()
+        .par_chunks_exact(RECORD_LEN as usize);
+    let corners: Vec<[f32; 3]> = records
+        .map(|r| {
+            let f = |at: usize| f32::from_le_bytes([r[at], r[at + 1], r[at + 2], r[at + 3]]);
+            [0, 1, 2].map(|k| [0, 4, 8].map(|d| f(12 + 12 * k + d)))
+        })
+        .collect::<Vec<[[f32; 3]; 3]>>()
+        .into_flattened();
+    let finite = |c: &[f32; 3]| c.iter().all(|x| x.is_finite());
+    if corners.len() != 3 * count as usize || !corners.par_iter().all(finite) {
+        return read_binary_serial(bytes, count, name);
+    }
+    let (positions, index) =
+        weld_parallel::weld(&corners).ok_or_else(|| too_many_vertices(name))?;
+    let triangles = index
+        .par_chunks_exact(3)
+        .map(|c| [c[0], c[1], c[2]])
+        .collect();
+    Ok(IndexedMesh::new(positions, triangles))
+}
+
+/// Binary STL, one record after the other (the reference of [`read_binary`], and its error
+/// path).
+pub(super) fn read_binary_serial(
+    bytes: &[u8],
+    count: u32,
+    name: &str,
+) -> Result<IndexedMesh, MeshIoError> {
     let mut cursor = ByteCursor::new(bytes, HEADER_LEN + 4, Endian::Little);
     // The size check bounds `count` by the file size, so these allocations are safe.
     let mut welder = Welder::with_capacity(count as usize);

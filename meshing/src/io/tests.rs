@@ -805,3 +805,19 @@ fn foreign_content_is_never_quoted() {
     assert!(text.contains("\\u{1b}[31m"), "{text}");
     assert!(!text.chars().any(char::is_control), "{text:?}");
 }
+
+/// The parallel binary STL reader gives the serial reader's mesh: a tessellated sphere (shared
+/// corners, signed zeros on its axes) written as binary STL.
+#[test]
+fn parallel_binary_stl_matches_the_serial_reader() {
+    let sphere = solidkit_kernel::tessellate::sphere(1.0, 40, 21)
+        .unwrap()
+        .mesh;
+    let mesh = IndexedMesh::new(sphere.positions, sphere.triangles);
+    let bytes = encoded(&mesh, MeshFormat::Stl, Encoding::Binary);
+    let count = u32::try_from(mesh.triangles.len()).unwrap();
+    let parallel = stl::read_binary(&bytes, count, "s.stl").unwrap();
+    let serial = stl::read_binary_serial(&bytes, count, "s.stl").unwrap();
+    assert_eq!(parallel, serial);
+    assert!(parallel.positions.len() < 3 * parallel.triangles.len() / 2);
+}

@@ -8,10 +8,12 @@ use std::collections::HashMap;
 
 use glam::DVec3;
 
+use super::key_hash::KeyHash;
+
 /// Builds a vertex array in which no two positions are bit-identical.
 #[derive(Debug, Default)]
 pub(super) struct Welder {
-    index_of: HashMap<[u64; 3], u32>,
+    index_of: HashMap<[u64; 3], u32, KeyHash>,
     positions: Vec<DVec3>,
 }
 
@@ -19,7 +21,7 @@ impl Welder {
     /// A welder expecting about `capacity` distinct positions.
     pub(super) fn with_capacity(capacity: usize) -> Self {
         Self {
-            index_of: HashMap::with_capacity(capacity),
+            index_of: HashMap::with_capacity_and_hasher(capacity, KeyHash::default()),
             positions: Vec::with_capacity(capacity),
         }
     }

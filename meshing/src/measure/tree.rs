@@ -91,16 +91,19 @@ impl TriangleTree {
     }
 
     /// The shared tree (slots are its order, `0..triangle_count()`).
+    #[cfg(test)]
     pub(crate) fn bvh(&self) -> &TriangleBvh {
         &self.bvh
     }
 
     /// The corners of the triangle in `slot`.
+    #[cfg(test)]
     pub(crate) fn slot_corners(&self, slot: usize) -> [DVec3; 3] {
         self.bvh.corners()[slot]
     }
 
     /// The index in the input mesh of the triangle in `slot`.
+    #[cfg(test)]
     pub(crate) fn slot_triangle(&self, slot: usize) -> u32 {
         self.ids[slot]
     }

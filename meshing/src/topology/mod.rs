@@ -21,7 +21,7 @@
 //! # Self-intersections
 //!
 //! [`TopologyReport::of`] also counts the pairs of triangles that meet beyond the vertices they
-//! share ([`crate::intersect`]: BVH broad phase, exact predicates), which no valid solid boundary
+//! share ([`crate::intersect`]: Morton-curve broad phase, exact predicates), which no valid solid boundary
 //! has; [`TopologyReport::with_options`] can skip it (it costs about as much as the rest of the
 //! report together).
 
