@@ -29,7 +29,15 @@ pub fn edge_vertex(pa: DVec3, va: f32, pb: DVec3, vb: f32) -> Option<DVec3> {
     if inside(va) == inside(vb) {
         return None;
     }
-    let (va, vb) = (va as f64, vb as f64);
+    // A zero settled outside sits on the surface: the vertex goes to it (as to an exact 0).
+    let on_surface = |v: f32| {
+        if v == super::OUTSIDE_ZERO {
+            0.0
+        } else {
+            v as f64
+        }
+    };
+    let (va, vb) = (on_surface(va), on_surface(vb));
     let t = va / (va - vb);
     let t = if t.is_finite() {
         t.clamp(EDGE_MARGIN, 1.0 - EDGE_MARGIN)
