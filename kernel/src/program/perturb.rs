@@ -15,7 +15,10 @@
 //! `f(p) + ε·∂f/∂d` does. Each leaf's one-sided derivative is a forward difference over a step of
 //! `1e-7` of the coordinate scale, exact in sign at creases and corners of polytopes (where a
 //! gradient would pick one face) and giving the second-order sign where the first order vanishes.
-//! The final sign is the value's when it lies outside the tie band, else the derivative's; a
+//! The step rule decides only zeros where operands meet from opposite sides (a contact, below);
+//! a zero on a surface no other operand touches stays outside, as marching cubes always had it
+//! (the step would make the vertex sample of a sharp tip an inside island). Otherwise the
+//! final sign is the value's when it lies outside the tie band, else the derivative's; a
 //! derivative of exactly 0 counts as outside (the old rule), which only a surface tangent to `d`
 //! to all orders can give.
 //!
@@ -134,6 +137,12 @@ impl Program {
         let (v, d, contact) = slots[*self.regs.last().expect("non-empty") as usize];
         if v.abs() > tol {
             return v < 0.0;
+        }
+        if !contact {
+            // A zero on a surface no other operand touches: outside, as marching cubes has
+            // always had it (the step along `d` could make the vertex sample of a sharp tip an
+            // island inside the tip).
+            return false;
         }
         let inside = d < 0.0;
         if contact && self.contact_probe(p, inside) {
