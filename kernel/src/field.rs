@@ -14,13 +14,13 @@ pub trait Field: Sync {
         }
     }
 
-    /// Whether the solid contains `p + ε·d` for small `ε > 0`, with `d` the fixed direction
-    /// [`crate::program::perturb::PERTURBATION`]: how polygonizers classify a sample whose value is
-    /// zero. A [`crate::Program`] takes the exact limit by symbolic perturbation; this default
-    /// looks a short finite step (`1e-5` of the coordinate scale) along `d`.
-    fn inside_at_zero(&self, p: DVec3) -> bool {
-        let step = 1e-5 * (1.0 + p.abs().max_element());
-        self.value(p + crate::program::perturb::PERTURBATION * step) < 0.0
+    /// Where a sample whose value is zero lies: how polygonizers classify it. A
+    /// [`crate::Program`] settles zeros where operands meet by symbolic perturbation
+    /// ([`crate::program::perturb`]); this default knows no operands, so every zero lies on a
+    /// lone surface and the polygonizer decides it from the lattice.
+    fn zero_side(&self, p: DVec3) -> crate::program::perturb::ZeroSide {
+        let _ = p;
+        crate::program::perturb::ZeroSide::Surface
     }
 }
 

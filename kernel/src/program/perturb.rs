@@ -15,12 +15,13 @@
 //! `f(p) + ε·∂f/∂d` does. Each leaf's one-sided derivative is a forward difference over a step of
 //! `1e-7` of the coordinate scale, exact in sign at creases and corners of polytopes (where a
 //! gradient would pick one face) and giving the second-order sign where the first order vanishes.
-//! The step rule decides only zeros where operands meet from opposite sides (a contact, below);
-//! a zero on a surface no other operand touches stays outside, as marching cubes always had it
-//! (the step would make the vertex sample of a sharp tip an inside island). Otherwise the
-//! final sign is the value's when it lies outside the tie band, else the derivative's; a
-//! derivative of exactly 0 counts as outside (the old rule), which only a surface tangent to `d`
-//! to all orders can give.
+//! The step rule decides only zeros where operands meet from opposite sides (a contact, below).
+//! A zero on a surface no other operand touches is [`ZeroSide::Surface`]: the program leaves it
+//! to the polygonizer, which knows the lattice (the step would make the vertex sample of a sharp
+//! tip an inside island, and "always outside" bevels every face lying on a sample plane by a
+//! cell). Otherwise the final sign is the value's when it lies outside the tie band, else the
+//! derivative's; a derivative of exactly 0 counts as outside, which only a surface tangent to
+//! `d` to all orders can give.
 //!
 //! Contacts of lower dimension: where the tie of a `min`/`max` is between operands that meet from
 //! opposite sides (their derivatives along `d` have opposite signs), the step along `d` lands in
@@ -52,7 +53,18 @@ pub const PERTURBATION: DVec3 = DVec3::new(
     0.391_430_291_900_961_6,
 );
 
-/// Scratch slot of [`Program::inside_at_zero`]: value, derivative along [`PERTURBATION`], and
+/// Where a zero of the field lies, as [`Program::zero_side`] settles it.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum ZeroSide {
+    /// Inside the solid: a face shared inside a union, an edge or corner of a stack.
+    Inside,
+    /// Outside the solid: a cutter flush with a face, a pinch of tangent operands.
+    Outside,
+    /// On a surface no other operand touches; the polygonizer decides from the lattice.
+    Surface,
+}
+
+/// Scratch slot of [`Program::zero_side`]: value, derivative along [`PERTURBATION`], and
 /// whether the value came through a contact (see the module docs).
 pub type ZeroSlot = (f64, f64, bool);
 
@@ -63,10 +75,12 @@ pub fn tie_tolerance(p: DVec3) -> f64 {
 }
 
 impl Program {
-    /// Whether the solid contains the points `p + ε·`[`PERTURBATION`] for all small enough
-    /// `ε > 0`: the inside test for a sample whose value is (numerically) zero. `slots` is
-    /// scratch (resized as needed).
-    pub fn inside_at_zero(&self, p: DVec3, slots: &mut Vec<ZeroSlot>) -> bool {
+    /// Where the (numerically) zero point `p` lies: [`ZeroSide::Inside`] or
+    /// [`ZeroSide::Outside`] when operands meet there (whether the solid contains `p + ε·`
+    /// [`PERTURBATION`] for small `ε > 0`, unless the contact is a pinch), or
+    /// [`ZeroSide::Surface`] on a surface no other operand touches. A point whose value lies
+    /// outside the tie band takes its sign. `slots` is scratch (resized as needed).
+    pub fn zero_side(&self, p: DVec3, slots: &mut Vec<ZeroSlot>) -> ZeroSide {
         let tol = tie_tolerance(p);
         let step = 1e-7 * (1.0 + p.abs().max_element());
         let q = p + PERTURBATION * step;
@@ -135,21 +149,21 @@ impl Program {
             slots[self.regs[i] as usize] = v;
         }
         let (v, d, contact) = slots[*self.regs.last().expect("non-empty") as usize];
+        let side = |inside: bool| {
+            if inside {
+                ZeroSide::Inside
+            } else {
+                ZeroSide::Outside
+            }
+        };
         if v.abs() > tol {
-            return v < 0.0;
+            return side(v < 0.0);
         }
         if !contact {
-            // A zero on a surface no other operand touches: outside, as marching cubes has
-            // always had it (the step along `d` could make the vertex sample of a sharp tip an
-            // island inside the tip).
-            return false;
+            return ZeroSide::Surface;
         }
         let inside = d < 0.0;
-        if contact && self.contact_probe(p, inside) {
-            !inside
-        } else {
-            inside
-        }
+        side(inside != self.contact_probe(p, inside))
     }
 
     /// Whether the zero point `p`, settled `inside` (or not) by the step along [`PERTURBATION`]

@@ -2,7 +2,7 @@
 //! cutters' faces are outside, creases and corners take the exact one-sided sign, the direction
 //! is generic for lattice models, and a pruned program settles every zero as the full one does.
 
-use super::perturb::PERTURBATION;
+use super::perturb::{PERTURBATION, ZeroSide};
 use super::{IntervalScratch, Pruned};
 use crate::primitive::conformance::Rng;
 use crate::{Aabb, Solid};
@@ -12,8 +12,12 @@ fn unit_box_at(x: f64, y: f64, z: f64) -> Solid {
     Solid::cuboid(DVec3::ONE).translate(DVec3::new(x, y, z) + DVec3::splat(0.5))
 }
 
+fn side(s: &Solid, p: DVec3) -> ZeroSide {
+    s.compile().zero_side(p, &mut Vec::new())
+}
+
 fn inside(s: &Solid, p: DVec3) -> bool {
-    s.compile().inside_at_zero(p, &mut Vec::new())
+    side(s, p) == ZeroSide::Inside
 }
 
 #[test]
@@ -66,9 +70,10 @@ fn flush_cutter_face_is_outside() {
 }
 
 #[test]
-fn zeros_on_a_lone_surface_are_outside() {
-    // No other operand touches a box's corners, edges or faces, nor a sphere: outside (the
-    // step rule applies to contacts only; at a sharp tip it would leave an inside island).
+fn zeros_on_a_lone_surface_are_left_to_the_lattice() {
+    // No other operand touches a box's corners, edges or faces, nor a sphere: the polygonizer
+    // decides (the step rule applies to contacts only; at a sharp tip it would leave an inside
+    // island).
     let b = unit_box_at(0.0, 0.0, 0.0);
     for p in [
         DVec3::ZERO,
@@ -77,12 +82,17 @@ fn zeros_on_a_lone_surface_are_outside() {
         DVec3::new(0.5, 0.0, 0.0),
         DVec3::new(0.5, 0.5, 0.0),
     ] {
-        assert!(!inside(&b, p), "{p}");
+        assert_eq!(side(&b, p), ZeroSide::Surface, "{p}");
     }
     let d = PERTURBATION;
     let s = Solid::sphere(1.0);
-    assert!(!inside(&s, -d));
-    assert!(!inside(&s, DVec3::new(-d.y, d.x, 0.0).normalize()));
+    assert_eq!(side(&s, -d), ZeroSide::Surface);
+    assert_eq!(
+        side(&s, DVec3::new(-d.y, d.x, 0.0).normalize()),
+        ZeroSide::Surface
+    );
+    // Off the surface the value decides.
+    assert_eq!(side(&s, DVec3::ZERO), ZeroSide::Inside);
 }
 
 #[test]
@@ -126,8 +136,8 @@ fn pruned_programs_settle_zeros_as_the_full_program() {
                 if full.value(p) == 0.0 {
                     zeros += 1;
                     assert_eq!(
-                        full.inside_at_zero(p, &mut a),
-                        pruned.inside_at_zero(p, &mut b),
+                        full.zero_side(p, &mut a),
+                        pruned.zero_side(p, &mut b),
                         "{p}"
                     );
                 }

@@ -106,7 +106,7 @@ impl Field for Program {
         }
     }
 
-    fn inside_at_zero(&self, p: DVec3) -> bool {
-        Program::inside_at_zero(self, p, &mut Vec::new())
+    fn zero_side(&self, p: DVec3) -> super::perturb::ZeroSide {
+        Program::zero_side(self, p, &mut Vec::new())
     }
 }

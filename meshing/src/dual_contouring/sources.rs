@@ -4,7 +4,9 @@
 
 use super::block::{Block, BlockScratch, build};
 use super::crossing::DcField;
+use crate::marching_cubes::sign::{LONE_ZERO, lone_inside};
 use crate::marching_cubes::{GridSpec, SampleGrid, inside, settle};
+use crate::octree::grid_value;
 use crate::octree::{BoxSamples, Cancelled, MeshStats, Progress, SparseOptions};
 use rayon::prelude::*;
 use solidkit_kernel::Program;
@@ -44,7 +46,7 @@ pub(crate) fn sparse_blocks(
                 }
                 let e = leaf.extent(spec);
                 let n = [e[0] + 1, e[1] + 1, e[2] + 1];
-                let sampling = values.sample(&leaf.program, spec, leaf.min, n, batch);
+                let sampling = values.sample(&leaf.program, program, spec, leaf.min, n, batch);
                 let mut b = build(
                     leaf.program.as_ref(),
                     spec,
@@ -169,14 +171,19 @@ impl Signs for SparseSigns<'_> {
         if let Some(&v) = self.cache.get(&s) {
             return v;
         }
-        let mut out = [0.0f32];
-        let p = [0, 1, 2].map(|a| self.spec.coordinate(a, s[a]));
-        self.program
-            .eval_many(&[p[0]], &[p[1]], &[p[2]], &mut out, &mut self.batch);
-        let program = &self.program;
-        let v = inside(settle(p[0], p[1], p[2], out[0], |q| {
-            program.inside_at_zero(q, &mut Vec::new())
-        }));
+        let (program, spec) = (self.program, &self.spec);
+        let raw = grid_value(program, spec, s, &mut self.batch);
+        let p = [0, 1, 2].map(|a| spec.coordinate(a, s[a]));
+        let settled = settle(p[0], p[1], p[2], raw, |q| {
+            program.zero_side(q, &mut Vec::new())
+        });
+        let v = if settled == LONE_ZERO {
+            lone_inside(s, spec.samples(), |q| {
+                grid_value(program, spec, q, &mut self.batch)
+            })
+        } else {
+            inside(settled)
+        };
         self.cache.insert(s, v);
         v
     }

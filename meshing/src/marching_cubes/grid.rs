@@ -1,6 +1,6 @@
 //! Uniform sampling grids: where the samples are ([`GridSpec`]) and their values ([`SampleGrid`]).
 
-use super::sign::{NOISE, settle, settle_field};
+use super::sign::{LONE_ZERO, NOISE, resolve_lone, settle, settle_field};
 use glam::DVec3;
 use rayon::prelude::*;
 use solidkit_kernel::program::BatchScratch;
@@ -208,7 +208,7 @@ impl SampleGrid {
                     }
                 }
             });
-        Self { spec, values }
+        Self::settled(spec, values)
     }
 
     /// Samples a lowered solid at every grid point with the full program (the dense path: no
@@ -229,12 +229,25 @@ impl SampleGrid {
                     y.fill(spec.coordinate(1, j));
                     program.eval_many(&x, &y, &z, out, &mut scratch);
                     for (i, v) in out.iter_mut().enumerate() {
-                        *v = settle(x[i], y[i], z[i], *v, |p| {
-                            program.inside_at_zero(p, &mut slots)
-                        });
+                        *v = settle(x[i], y[i], z[i], *v, |p| program.zero_side(p, &mut slots));
                     }
                 }
             });
+        Self::settled(spec, values)
+    }
+
+    /// The grid of `values` sampled and settled but for the lone zeros, which it settles from
+    /// their lattice neighbours ([`resolve_lone`]).
+    fn settled(spec: GridSpec, mut values: Vec<f32>) -> Self {
+        let lone: Vec<usize> = values
+            .par_iter()
+            .enumerate()
+            .filter(|(_, v)| **v == LONE_ZERO)
+            .map(|(i, _)| i)
+            .collect();
+        let samples = spec.samples();
+        // Every neighbour lies in the grid, so `outer` is never asked.
+        resolve_lone(&mut values, samples, [0; 3], samples, &lone, |_| f32::NAN);
         Self { spec, values }
     }
 

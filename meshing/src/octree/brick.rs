@@ -10,8 +10,9 @@
 use super::subdivide::Node;
 use super::thin::ThinCounts;
 use crate::marching_cubes::polygonize::loop_centre;
+use crate::marching_cubes::sign::{LONE_ZERO, resolve_lone};
 use crate::marching_cubes::table::{CENTRE, NO_CENTRE, case_table, edge_origin};
-use crate::marching_cubes::{GridSpec, edge_vertex, inside, settle};
+use crate::marching_cubes::{GridSpec, edge_vertex, inside, settle, snap_noise};
 use glam::Vec3;
 use solidkit_kernel::Program;
 use solidkit_kernel::program::{BatchScratch, IntervalScratch};
@@ -99,6 +100,8 @@ pub(crate) struct BoxSamples {
     pub values: Vec<f32>,
     /// Scratch of the symbolic inside test at zeros.
     zero_slots: Vec<solidkit_kernel::program::perturb::ZeroSlot>,
+    /// Indices of the lone zeros of the last box sampled (see [`resolve_lone`]).
+    lone: Vec<usize>,
     /// Thin and hidden features of the last box sampled ([`super::thin`]).
     pub thin: ThinCounts,
     /// Scratch of the feature search.
@@ -106,11 +109,13 @@ pub(crate) struct BoxSamples {
 }
 
 impl BoxSamples {
-    /// Samples the `n[0] × n[1] × n[2]` grid points from `min` with `program`; returns the
+    /// Samples the `n[0] × n[1] × n[2]` grid points from `min` with `program` (pruned for the
+    /// box; `root` is the full program, for lattice neighbours outside the box); returns the
     /// evaluation time in seconds. The one sampling rule of the sparse MC and DC paths.
     pub(crate) fn sample(
         &mut self,
         program: &Program,
+        root: &Program,
         spec: &GridSpec,
         min: [usize; 3],
         n: [usize; 3],
@@ -135,9 +140,19 @@ impl BoxSamples {
         program.eval_many(&self.x, &self.y, &self.z, &mut self.values, batch);
         let seconds = start.elapsed().as_secs_f64();
         let slots = &mut self.zero_slots;
+        self.lone.clear();
         for (i, v) in self.values.iter_mut().enumerate() {
             *v = settle(self.x[i], self.y[i], self.z[i], *v, |p| {
-                program.inside_at_zero(p, slots)
+                program.zero_side(p, slots)
+            });
+            if *v == LONE_ZERO {
+                self.lone.push(i);
+            }
+        }
+        if !self.lone.is_empty() {
+            let samples = spec.samples();
+            resolve_lone(&mut self.values, n, min, samples, &self.lone, |q| {
+                grid_value(root, spec, q, batch)
             });
         }
         self.thin = super::thin::scan(&self.values, n, min, spec, program, &mut self.interval);
@@ -145,11 +160,25 @@ impl BoxSamples {
     }
 }
 
+/// The settled-but-lone value (noise snapped, zeros left zero) of grid sample `q` by `program`:
+/// single precision at the sample's single-precision coordinates, as every sampler evaluates it.
+pub(crate) fn grid_value(
+    program: &Program,
+    spec: &GridSpec,
+    q: [usize; 3],
+    batch: &mut BatchScratch,
+) -> f32 {
+    let p = [0, 1, 2].map(|a| spec.coordinate(a, q[a]));
+    let mut out = [0.0f32];
+    program.eval_many(&[p[0]], &[p[1]], &[p[2]], &mut out, batch);
+    snap_noise(p[0], p[1], p[2], out[0])
+}
+
 /// Samples the brick's points (x fastest) with its program into `s.samples.values` and `s.inside`.
-fn sample(node: &Node, spec: &GridSpec, n: [usize; 3], s: &mut BrickScratch) {
+fn sample(node: &Node, root: &Program, spec: &GridSpec, n: [usize; 3], s: &mut BrickScratch) {
     s.evaluation_s = s
         .samples
-        .sample(&node.program, spec, node.min, n, &mut s.batch);
+        .sample(&node.program, root, spec, node.min, n, &mut s.batch);
     s.inside.clear();
     s.inside
         .extend(s.samples.values.iter().map(|&v| u8::from(inside(v))));
@@ -157,13 +186,14 @@ fn sample(node: &Node, spec: &GridSpec, n: [usize; 3], s: &mut BrickScratch) {
 
 pub(crate) fn process(
     node: &Node,
+    root: &Program,
     spec: &GridSpec,
     brick: usize,
     s: &mut BrickScratch,
 ) -> BrickOutput {
     let e = node.extent(spec);
     let n = [e[0] + 1, e[1] + 1, e[2] + 1];
-    sample(node, spec, n, s);
+    sample(node, root, spec, n, s);
     let (nx, nxy) = (n[0], n[0] * n[1]);
     let owned = [0, 1, 2].map(|a| {
         if node.min[a] + e[a] == spec.cells[a] {

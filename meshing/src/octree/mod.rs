@@ -17,7 +17,7 @@ mod subdivide;
 pub mod thin;
 
 /// The surface leaf bricks with their pruned programs (also used by dual contouring).
-pub(crate) use brick::BoxSamples;
+pub(crate) use brick::{BoxSamples, grid_value};
 pub use control::{CancelToken, Cancelled, MeshStats, Progress, ProgressFn, SparseOptions};
 pub(crate) use subdivide::surface_bricks as surface_nodes;
 pub use thin::ThinCounts;
@@ -61,7 +61,7 @@ pub fn mesh_sparse_into(
             if opts.is_cancelled() {
                 return brick::BrickOutput::default();
             }
-            let out = brick::process(leaf, &spec, opts.brick_size(), scratch);
+            let out = brick::process(leaf, program, &spec, opts.brick_size(), scratch);
             let n = done.fetch_add(1, Ordering::Relaxed) + 1;
             opts.report(Progress {
                 stage: "bricks",
