@@ -25,7 +25,7 @@ pub mod polyhedra;
 pub mod primitive;
 pub mod profile;
 pub mod program;
-mod simd;
+pub mod simd;
 mod solid;
 pub mod tessellate;
 mod transform;

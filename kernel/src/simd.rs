@@ -37,6 +37,7 @@ pub fn avx512() -> bool {
 
 /// Defines a function whose body is compiled for the baseline target, AVX2 and AVX-512F,
 /// dispatched at run time. The body must be an element-wise loop (it is force-inlined into both copies).
+#[macro_export]
 macro_rules! wide_loop {
     ($(#[$m:meta])* $vis:vis fn $name:ident($($arg:ident : $ty:ty),* $(,)?) $body:block) => {
         $(#[$m])*
@@ -69,4 +70,4 @@ macro_rules! wide_loop {
     };
 }
 
-pub(crate) use wide_loop;
+pub use crate::wide_loop;
