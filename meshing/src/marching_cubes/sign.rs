@@ -128,14 +128,18 @@ pub fn resolve_lone(
     for &i in lone {
         let local = [i % n[0], i / n[0] % n[1], i / (n[0] * n[1])];
         let s = [0, 1, 2].map(|a| origin[a] + local[a]);
-        let inside = lone_inside(s, samples, |q| {
+        let in_box = |q: [usize; 3]| {
             let l = [0, 1, 2].map(|a| q[a].wrapping_sub(origin[a]));
-            if (0..3).all(|a| l[a] < n[a]) {
-                values[l[0] + n[0] * (l[1] + n[1] * l[2])]
-            } else {
-                outer(q)
-            }
-        });
+            (0..3)
+                .all(|a| l[a] < n[a])
+                .then(|| l[0] + n[0] * (l[1] + n[1] * l[2]))
+        };
+        // The neighbours in the box first: a neighbour outside it costs an evaluation.
+        let inside = lone_inside(s, samples, |q| in_box(q).map_or(f32::NAN, |l| values[l]))
+            || lone_inside(s, samples, |q| match in_box(q) {
+                Some(_) => f32::NAN,
+                None => outer(q),
+            });
         values[i] = if inside { INSIDE_ZERO } else { OUTSIDE_ZERO };
     }
 }
