@@ -6,6 +6,7 @@ use rayon::prelude::*;
 use std::collections::HashMap;
 
 use super::SelfIntersections;
+use super::copies::Copies;
 use super::triangles::{Tri, meet_beyond_shared};
 use crate::IndexedMesh;
 use crate::measure::{MeasureError, TriangleTree};
@@ -29,7 +30,7 @@ pub(crate) fn reference_self_intersections(
         .into_par_iter()
         .map(|s| Tri::new(tree.slot_corners(s)))
         .collect();
-    let copies = Copies::find(&tree, mesh, &mut tris, limit);
+    let copies = find_copies(&tree, mesh, &mut tris, limit);
     let leaves = tree.bvh().leaves();
     let total = leaves
         .par_chunks(CHUNK)
@@ -49,68 +50,34 @@ pub(crate) fn reference_self_intersections(
     Ok(total)
 }
 
-/// The groups of repeated triangles, by their representative (lowest index).
-#[derive(Debug, Default)]
-struct Copies {
-    /// Representative → (number of copies, the `limit + 1` lowest indices, ascending).
-    groups: HashMap<u32, (usize, Vec<u32>)>,
-}
-
-impl Copies {
-    /// Groups the usable triangles by their vertex set and removes all but the representative
-    /// of each group from `tris`.
-    fn find(
-        tree: &TriangleTree,
-        mesh: &IndexedMesh,
-        tris: &mut [Option<Tri>],
-        limit: usize,
-    ) -> Self {
-        let mut by_key: HashMap<[u32; 3], Vec<(u32, usize)>> = HashMap::new();
-        for (slot, tri) in tris.iter().enumerate() {
-            if tri.is_some() {
-                let i = tree.slot_triangle(slot);
-                let mut key = mesh.triangles[i as usize];
-                key.sort_unstable();
-                by_key.entry(key).or_default().push((i, slot));
-            }
-        }
-        let mut groups = HashMap::new();
-        for mut members in by_key.into_values().filter(|m| m.len() > 1) {
-            members.sort_unstable();
-            for &(_, slot) in &members[1..] {
-                tris[slot] = None;
-            }
-            // `limit + 1`: the smallest pairs among copies are the first with the next `limit`.
-            let first = members.iter().take(limit + 1).map(|&(i, _)| i).collect();
-            groups.insert(members[0].0, (members.len(), first));
-        }
-        Self { groups }
-    }
-
-    /// How many triangles `i` stands for, and the lowest of their indices (none listed for a
-    /// triangle without copies: it stands for itself).
-    fn of(&self, i: u32) -> (usize, &[u32]) {
-        match self.groups.get(&i) {
-            Some((count, first)) => (*count, first),
-            None => (1, &[]),
+/// Groups the usable triangles by their vertex set (a hash map, the first method) and removes
+/// all but the representative of each group from `tris`.
+fn find_copies(
+    tree: &TriangleTree,
+    mesh: &IndexedMesh,
+    tris: &mut [Option<Tri>],
+    limit: usize,
+) -> Copies {
+    let mut by_key: HashMap<[u32; 3], Vec<(u32, usize)>> = HashMap::new();
+    for (slot, tri) in tris.iter().enumerate() {
+        if tri.is_some() {
+            let i = tree.slot_triangle(slot);
+            let mut key = mesh.triangles[i as usize];
+            key.sort_unstable();
+            by_key.entry(key).or_default().push((i, slot));
         }
     }
-
-    /// The pairs of copies of one triangle: they share all three vertices, so they meet.
-    fn among_themselves(&self, limit: usize) -> SelfIntersections {
-        let mut found = SelfIntersections::default();
-        for (count, first) in self.groups.values() {
-            found.count += count * (count - 1) / 2;
-            for (a, &i) in first.iter().enumerate() {
-                found
-                    .examples
-                    .extend(first[a + 1..].iter().map(|&j| [i, j]));
-            }
+    let mut groups = HashMap::new();
+    for mut members in by_key.into_values().filter(|m| m.len() > 1) {
+        members.sort_unstable();
+        for &(_, slot) in &members[1..] {
+            tris[slot] = None;
         }
-        found.examples.sort_unstable();
-        found.examples.truncate(limit);
-        found
+        // `limit + 1`: the smallest pairs among copies are the first with the next `limit`.
+        let first = members.iter().take(limit + 1).map(|&(i, _)| i).collect();
+        groups.insert(members[0].0, (members.len(), first));
     }
+    Copies { groups }
 }
 
 /// Reusable buffers of one worker.
