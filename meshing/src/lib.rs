@@ -6,12 +6,14 @@
 #![warn(missing_docs)]
 
 pub mod dual_contouring;
+pub mod grid;
 pub mod halfedge;
 pub mod intersect;
 pub mod io;
 pub mod marching_cubes;
 pub mod measure;
 pub mod octree;
+pub mod pipeline;
 pub mod refine;
 pub mod render;
 pub mod repair;

@@ -15,8 +15,8 @@
 //! that meshes empty while the search found points inside it) is reported in [`Refined::warnings`].
 
 use crate::IndexedMesh;
-use crate::marching_cubes::GridSpec;
-use crate::marching_cubes::grid::MAX_CELLS_PER_AXIS;
+use crate::grid::GridSpec;
+use crate::grid::MAX_CELLS_PER_AXIS;
 use crate::octree::{Cancelled, MeshStats};
 
 /// Limits of refinement.

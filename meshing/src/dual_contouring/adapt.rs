@@ -23,8 +23,8 @@ use super::patches::patch_table;
 use super::qef::Qef;
 use super::sources::Signs;
 use crate::IndexedMesh;
+use crate::grid::GridSpec;
 use crate::intersect::self_intersections;
-use crate::marching_cubes::GridSpec;
 use glam::DVec3;
 use std::collections::{HashMap, HashSet};
 

@@ -11,8 +11,9 @@ use super::certify::{SEPARATOR_MARGIN, VERTEX_MARGIN};
 use super::crossing::{CrossingScratch, DcField, EdgeQuery, refine};
 use super::patches::{Config, NO_PATCH, Separator, face_edges, patch_table, reachable};
 use super::qef::Qef;
+use crate::grid::GridSpec;
+use crate::marching_cubes::inside;
 use crate::marching_cubes::table::{cell_config, edge_origin};
-use crate::marching_cubes::{GridSpec, inside};
 use glam::DVec3;
 
 /// Marks a cell without surface in [`Block::first`].

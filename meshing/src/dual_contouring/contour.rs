@@ -8,7 +8,7 @@ use super::certify::{EPS, EdgeFrame, FaceKind, RingFace, certify};
 use super::crossing::DcField;
 use super::faces::{DualFace, face_vertex};
 use super::patches::{Config, NO_PATCH, edge_number, face_segment, patch_table};
-use crate::marching_cubes::GridSpec;
+use crate::grid::GridSpec;
 use glam::DVec3;
 use rayon::prelude::*;
 use std::collections::HashMap;

@@ -20,7 +20,7 @@ use super::patches::{
     Config, NO_PATCH, Separator, cut_corner, edge_number, face_edges, face_segment, patch_table,
 };
 use super::qef::Qef;
-use crate::marching_cubes::GridSpec;
+use crate::grid::GridSpec;
 use crate::marching_cubes::table::{corner_offset, edge_origin};
 use glam::DVec3;
 

@@ -46,7 +46,8 @@ mod sources;
 pub use crossing::DcField;
 
 use crate::IndexedMesh;
-use crate::marching_cubes::{GridSpec, SampleGrid};
+use crate::grid::GridSpec;
+use crate::marching_cubes::SampleGrid;
 use crate::octree::{Cancelled, MeshStats, SparseOptions};
 use crate::sink::MeshSink;
 use glam::DVec3;

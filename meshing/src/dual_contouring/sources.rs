@@ -4,8 +4,9 @@
 
 use super::block::{Block, BlockScratch, build};
 use super::crossing::DcField;
+use crate::grid::GridSpec;
 use crate::marching_cubes::sign::{LONE_ZERO, lone_inside};
-use crate::marching_cubes::{GridSpec, SampleGrid, inside, settle};
+use crate::marching_cubes::{SampleGrid, inside, settle};
 use crate::octree::grid_value;
 use crate::octree::{BoxSamples, Cancelled, MeshStats, Progress, SparseOptions};
 use rayon::prelude::*;

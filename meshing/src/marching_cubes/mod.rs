@@ -5,13 +5,14 @@
 //! [`grid`] samples a field in parallel; [`polygonize`] turns samples into triangles with vertices
 //! shared by construction. [`mesh_field`] runs the whole path.
 
-pub mod grid;
 pub mod polygonize;
+pub mod samples;
 pub mod sign;
 pub mod table;
 
-pub use grid::{GridError, GridSpec, SampleGrid};
+pub use crate::grid::{GridError, GridSpec};
 pub use polygonize::{EDGE_MARGIN, edge_vertex, polygonize_into};
+pub use samples::SampleGrid;
 pub use sign::{INSIDE_ZERO, NOISE, OUTSIDE_ZERO, inside, settle, snap_noise};
 
 use crate::IndexedMesh;

@@ -8,7 +8,7 @@
 //! positions interpolate linearly along the edge, kept at least [`EDGE_MARGIN`] of the edge away
 //! from either end, so no two vertices coincide and no triangle is degenerate.
 
-use super::grid::SampleGrid;
+use super::samples::SampleGrid;
 use super::sign::inside;
 use super::table::{CENTRE, NO_CENTRE, case_table, edge_origin};
 use crate::sink::MeshSink;

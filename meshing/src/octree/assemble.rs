@@ -12,7 +12,7 @@
 use super::brick::{
     BrickEdges, BrickTriangles, CENTRE_IDS, LOCAL_EDGE_IDS, local_edge, local_parts,
 };
-use crate::marching_cubes::GridSpec;
+use crate::grid::GridSpec;
 use crate::sink::MeshSink;
 use rayon::prelude::*;
 use std::collections::HashMap;

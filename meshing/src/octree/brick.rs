@@ -9,10 +9,11 @@
 
 use super::subdivide::Node;
 use super::thin::ThinCounts;
+use crate::grid::GridSpec;
 use crate::marching_cubes::polygonize::loop_centre;
 use crate::marching_cubes::sign::{LONE_ZERO, resolve_lone};
 use crate::marching_cubes::table::{CENTRE, NO_CENTRE, case_table, edge_origin};
-use crate::marching_cubes::{GridSpec, edge_vertex, inside, settle, snap_noise};
+use crate::marching_cubes::{edge_vertex, inside, settle, snap_noise};
 use glam::Vec3;
 use solidkit_kernel::Program;
 use solidkit_kernel::program::{BatchScratch, IntervalScratch};

@@ -23,7 +23,8 @@ pub(crate) use subdivide::surface_bricks as surface_nodes;
 pub use thin::ThinCounts;
 
 use crate::IndexedMesh;
-use crate::marching_cubes::{GridSpec, SampleGrid, polygonize_into};
+use crate::grid::GridSpec;
+use crate::marching_cubes::{SampleGrid, polygonize_into};
 use crate::sink::MeshSink;
 use rayon::prelude::*;
 use solidkit_kernel::Program;

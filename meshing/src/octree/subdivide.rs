@@ -2,7 +2,7 @@
 //! surface) and prunes its program; surface boxes split into eight until they are leaf bricks.
 
 use super::control::{Cancelled, MeshStats, Progress, SparseOptions};
-use crate::marching_cubes::GridSpec;
+use crate::grid::GridSpec;
 use rayon::prelude::*;
 use solidkit_kernel::program::{IntervalScratch, Pruned};
 use solidkit_kernel::{Aabb, Program};

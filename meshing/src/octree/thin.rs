@@ -21,7 +21,7 @@
 //! The counts go into [`ThinCounts`]; [`crate::refine`] decides from them whether to mesh again on
 //! a finer grid. The scan costs a few comparisons per sample where nothing hints at a feature.
 
-use crate::marching_cubes::GridSpec;
+use crate::grid::GridSpec;
 use glam::DVec3;
 use solidkit_kernel::program::IntervalScratch;
 use solidkit_kernel::{Aabb, Program};

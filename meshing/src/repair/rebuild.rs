@@ -6,7 +6,7 @@
 use super::RepairError;
 use crate::IndexedMesh;
 use crate::dual_contouring::{DcOptions, mesh_dc};
-use crate::marching_cubes::GridSpec;
+use crate::grid::GridSpec;
 use crate::measure::{Hausdorff, hausdorff};
 use solidkit_kernel::primitive::MeshSolid;
 use solidkit_kernel::{Primitive, Solid};

@@ -2,8 +2,8 @@
 //! `solidkit mesh` does), or over a grid whose samples include the origin.
 
 use crate::IndexedMesh;
-use crate::marching_cubes::GridSpec;
-use crate::octree::{SparseOptions, mesh_sparse};
+use crate::grid::GridSpec;
+use crate::pipeline::{Domain, MeshOptions, mesh_solid};
 use glam::DVec3;
 use solidkit_kernel::{Aabb, Solid};
 
@@ -30,22 +30,22 @@ pub(crate) fn polygonise(
     resolution: usize,
     grid: Grid,
 ) -> Result<Polygonised, super::SuiteError> {
-    let bounds = solid.bbox();
-    let spec = match grid {
-        Grid::Bounds => GridSpec::for_bounds(&bounds, resolution),
-        Grid::Lattice => lattice(&bounds, resolution),
-    }
-    .map_err(|e| super::build_error(name, e))?;
-    let (mesh, _) = mesh_sparse(&solid.compile(), spec, &SparseOptions::default())
-        .map_err(|e| super::build_error(name, e))?;
+    let domain = match grid {
+        Grid::Bounds => Domain::Solid,
+        Grid::Lattice => Domain::Grid(
+            lattice(&solid.bbox(), resolution).map_err(|e| super::build_error(name, e))?,
+        ),
+    };
+    let options = MeshOptions::new(resolution).domain(domain).no_refinement();
+    let meshed = mesh_solid(solid, &options).map_err(|e| super::build_error(name, e))?;
     Ok(Polygonised {
-        mesh,
-        cell: spec.cell,
+        mesh: meshed.mesh,
+        cell: meshed.spec.cell,
     })
 }
 
 /// A grid of samples at integer multiples of the cell over `bounds`, one cell to spare.
-fn lattice(bounds: &Aabb, resolution: usize) -> Result<GridSpec, crate::marching_cubes::GridError> {
+fn lattice(bounds: &Aabb, resolution: usize) -> Result<GridSpec, crate::grid::GridError> {
     let probe = GridSpec::for_bounds(bounds, resolution)?;
     let cell = probe.cell;
     let lo = (bounds.min / cell).floor() - DVec3::ONE;

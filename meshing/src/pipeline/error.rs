@@ -1,0 +1,25 @@
+//! Why the pipeline made no mesh.
+
+use crate::grid::GridError;
+use crate::octree::Cancelled;
+
+/// Why [`super::mesh_solid`] made no mesh.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+#[non_exhaustive]
+pub enum PipelineError {
+    /// The solid (or its clipped part) has an empty bounding box.
+    #[error("the solid is empty (its bounding box is empty)")]
+    Empty,
+    /// The solid is unbounded and no clipping box was given.
+    #[error("the solid is unbounded; give meshing bounds with --bounds x0,y0,z0,x1,y1,z1")]
+    Unbounded,
+    /// A tolerance was given for a mesher that does not simplify.
+    #[error("--tolerance needs --method dc")]
+    ToleranceNeedsDc,
+    /// The grid cannot be made.
+    #[error(transparent)]
+    Grid(#[from] GridError),
+    /// The caller cancelled the run.
+    #[error(transparent)]
+    Cancelled(#[from] Cancelled),
+}

@@ -1,0 +1,169 @@
+//! The meshing pipeline, the one path from a solid to a mesh: domain → grid → program → mesher
+//! (with refinement where features are thinner than a cell) → mesh and warnings. The command
+//! line's `mesh` and `bench`, the generators and the tests all go through it.
+//!
+//! [`Prepared::new`] does everything before meshing (clipping, the grid, lowering the tree to a
+//! [`Program`], warnings about the operands) so a caller can report them early; [`Prepared::mesh`]
+//! runs the mesher; [`mesh_solid`] does both. The caller times the stages if it wants to (no
+//! clock is read here) and runs them in the thread pool of its choice.
+//!
+//! ```
+//! use solidkit_kernel::Solid;
+//! use solidkit_meshing::pipeline::{MeshOptions, mesh_solid};
+//!
+//! let solid = Solid::sphere(1.0);
+//! let meshed = mesh_solid(&solid, &MeshOptions::new(32)).unwrap();
+//! let report = meshed.report(&Default::default());
+//! assert!(report.closed && report.manifold);
+//! assert_eq!(report.shells, 1);
+//! ```
+
+mod error;
+mod options;
+pub mod warnings;
+
+pub use error::PipelineError;
+pub use options::{Domain, MeshOptions, Method};
+
+use crate::IndexedMesh;
+use crate::dual_contouring::{DcOptions, mesh_dc};
+use crate::grid::GridSpec;
+use crate::octree::{MeshStats, mesh_sparse};
+use crate::refine::mesh_refined;
+use crate::{ReportOptions, TopologyReport};
+use solidkit_kernel::{Aabb, Program, Solid};
+
+/// A solid ready to mesh: clipped to its domain, its grid chosen and its program compiled.
+#[derive(Debug)]
+pub struct Prepared {
+    options: MeshOptions,
+    spec: GridSpec,
+    program: Program,
+    /// Warnings about the solid itself (open mesh operands), before any meshing.
+    pub warnings: Vec<String>,
+}
+
+impl Prepared {
+    /// Clips `solid` to the domain of `options`, chooses the grid and compiles the program.
+    pub fn new(solid: &Solid, options: &MeshOptions) -> Result<Prepared, PipelineError> {
+        let warnings = warnings::open_operands(solid);
+        let clipped;
+        let (solid, grid) = match options.domain {
+            Domain::Solid => (solid, Grid::Padded(solid.bbox())),
+            Domain::Clip(clip) => {
+                // Explicit bounds clip the solid, so the mesh is closed even for unbounded solids.
+                clipped = solid.intersection(&Solid::cuboid(clip.size()).translate(clip.center()));
+                let bounds = clip.intersection(&clipped.bbox());
+                (&clipped, Grid::Padded(bounds))
+            }
+            Domain::Covering(domain) => (solid, Grid::Covering(domain)),
+            Domain::Grid(spec) => (solid, Grid::Given(spec)),
+        };
+        if let Grid::Padded(bounds) = &grid {
+            if bounds.is_empty() {
+                return Err(PipelineError::Empty);
+            }
+            if !bounds.is_finite() {
+                return Err(PipelineError::Unbounded);
+            }
+        }
+        if options.tolerance.is_some() && options.method != Method::Dc {
+            return Err(PipelineError::ToleranceNeedsDc);
+        }
+        let spec = match grid {
+            Grid::Padded(bounds) => GridSpec::for_bounds(&bounds, options.resolution)?,
+            Grid::Covering(domain) => GridSpec::covering(&domain, options.resolution)?,
+            Grid::Given(spec) => spec,
+        };
+        Ok(Prepared {
+            options: options.clone(),
+            spec,
+            program: solid.compile(),
+            warnings,
+        })
+    }
+
+    /// The grid the mesher starts from (refinement may nest finer ones in it).
+    pub fn spec(&self) -> &GridSpec {
+        &self.spec
+    }
+
+    /// The compiled program of the (clipped) solid.
+    pub fn program(&self) -> &Program {
+        &self.program
+    }
+
+    /// Meshes: the chosen mesher on the grid, then on finer nested grids while features are
+    /// thinner than a cell (within the refinement limits).
+    pub fn mesh(&self) -> Result<Meshed, PipelineError> {
+        let o = &self.options;
+        let dc = DcOptions {
+            tolerance: o.tolerance,
+            sparse: o.sparse.clone(),
+        };
+        let refined = mesh_refined(self.spec, &o.refine, |grid| match o.method {
+            Method::Mc => mesh_sparse(&self.program, grid, &o.sparse),
+            Method::Dc => mesh_dc(&self.program, grid, &dc),
+        })?;
+        Ok(Meshed {
+            mesh: refined.mesh,
+            stats: refined.stats,
+            spec: refined.spec,
+            factor: refined.factor,
+            samples_total: refined.samples_total,
+            lost_solid: refined.lost_solid,
+            warnings: refined.warnings,
+            program_length: self.program.len(),
+        })
+    }
+}
+
+/// Where [`Prepared::new`] takes its grid from.
+enum Grid {
+    /// `GridSpec::for_bounds` of these bounds (refused when empty or unbounded).
+    Padded(Aabb),
+    /// `GridSpec::covering` of this box.
+    Covering(Aabb),
+    /// As given.
+    Given(GridSpec),
+}
+
+/// A mesh made by the pipeline, with what the mesher and refinement did.
+#[derive(Debug)]
+#[non_exhaustive]
+pub struct Meshed {
+    /// The mesh.
+    pub mesh: IndexedMesh,
+    /// Statistics of the run that made the mesh.
+    pub stats: MeshStats,
+    /// The grid of that run.
+    pub spec: GridSpec,
+    /// How many times finer than the requested grid (1: not refined).
+    pub factor: usize,
+    /// Samples evaluated over all runs.
+    pub samples_total: u64,
+    /// Whether the mesh is empty though the feature search found the solid's inside.
+    pub lost_solid: bool,
+    /// What may be missing (refinement stopped by a limit, a lost solid), one line each.
+    pub warnings: Vec<String>,
+    /// Instructions in the solid's compiled program.
+    pub program_length: usize,
+}
+
+impl Meshed {
+    /// The topology report of the mesh.
+    pub fn report(&self, options: &ReportOptions) -> TopologyReport {
+        TopologyReport::with_options(&self.mesh, options)
+    }
+}
+
+/// [`Prepared::new`] then [`Prepared::mesh`]; the solid's own warnings come first in
+/// [`Meshed::warnings`].
+pub fn mesh_solid(solid: &Solid, options: &MeshOptions) -> Result<Meshed, PipelineError> {
+    let prepared = Prepared::new(solid, options)?;
+    let mut meshed = prepared.mesh()?;
+    let mut warnings = prepared.warnings;
+    warnings.append(&mut meshed.warnings);
+    meshed.warnings = warnings;
+    Ok(meshed)
+}

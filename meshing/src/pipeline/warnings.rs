@@ -1,0 +1,43 @@
+//! Warnings the pipeline attaches to a result that may be incomplete or wrong: open mesh
+//! operands, and a polygonization that is not a closed manifold.
+
+use crate::TopologyReport;
+use solidkit_kernel::primitive::MeshSource;
+use solidkit_kernel::{NodeKind, Primitive, Solid};
+
+/// One warning per open mesh operand of `solid` (edges whose two directions are not used equally
+/// often): such a solid is where the mesh's winding number is at least ½, which caps each hole.
+/// Sorted, without repeats.
+pub fn open_operands(solid: &Solid) -> Vec<String> {
+    let mut warnings = Vec::new();
+    solid.fold(|node, _: &[()]| {
+        if let NodeKind::Primitive(Primitive::Mesh(m)) = node.kind()
+            && m.open_edges() > 0
+        {
+            let what = match m.source() {
+                MeshSource::File { path } => format!("mesh \"{path}\""),
+                other => other.name().to_string(),
+            };
+            warnings.push(format!(
+                "{what} is not closed ({} open edges): its inside is where its winding number is at least 1/2, which caps each hole",
+                m.open_edges()
+            ));
+        }
+    });
+    warnings.sort();
+    warnings.dedup();
+    warnings
+}
+
+/// The warning for a polygonization `report` that is not a closed manifold. The mesher's output
+/// is closed and manifold by construction when the field's samples and interval bounds agree;
+/// where they do not (parameters near the limits of floating point) the result may be wrong, and
+/// must not be silent.
+pub fn not_closed_manifold(report: &TopologyReport) -> Option<String> {
+    (report.faces > 0 && !(report.closed && report.manifold)).then(|| {
+        format!(
+            "the mesh is not a closed manifold ({} boundary edges, {} non-manifold edges, {} non-manifold vertices): the field could not be evaluated faithfully everywhere, so the result may be wrong",
+            report.boundary_edges, report.non_manifold_edges, report.non_manifold_vertices
+        )
+    })
+}
