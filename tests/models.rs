@@ -6,14 +6,15 @@ use glam::DVec3;
 use solidkit_kernel::models::{self, Model, menger, menger_genus, menger_volume};
 use solidkit_kernel::{Aabb, Solid, json};
 use solidkit_meshing::TopologyReport;
-use solidkit_meshing::marching_cubes::GridSpec;
-use solidkit_meshing::octree::{SparseOptions, mesh_sparse};
+use solidkit_meshing::pipeline::{Domain, MeshOptions, mesh_solid};
 use solidkit_tests::{fixture, rel_err};
 
 /// Meshes `solid` with `n` cells along the longest side of `domain` (the benchmark convention).
 fn mesh_over(solid: &Solid, domain: &Aabb, n: usize) -> TopologyReport {
-    let spec = GridSpec::covering(domain, n).expect("grid");
-    let (mesh, _) = mesh_sparse(&solid.compile(), spec, &SparseOptions::default()).expect("mesh");
+    let options = MeshOptions::new(n)
+        .domain(Domain::Covering(*domain))
+        .no_refinement();
+    let mesh = mesh_solid(solid, &options).expect("mesh").mesh;
     let r = TopologyReport::of(&mesh);
     assert_eq!(r.self_intersections, Some(0), "{:?}", r.examples);
     r

@@ -2,8 +2,7 @@
 #![warn(missing_docs)]
 
 use solidkit_kernel::{Solid, json};
-use solidkit_meshing::marching_cubes::GridSpec;
-use solidkit_meshing::octree::{SparseOptions, mesh_sparse};
+use solidkit_meshing::pipeline::{MeshOptions, mesh_solid};
 use solidkit_meshing::{IndexedMesh, TopologyReport};
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
@@ -28,9 +27,8 @@ pub fn load_tree(rel: &str) -> Solid {
 /// `solidkit mesh` does. Every such mesh is also checked to have no self-intersection (marching
 /// cubes never folds a surface onto itself).
 pub fn mesh(solid: &Solid, resolution: usize) -> (IndexedMesh, TopologyReport) {
-    let spec = GridSpec::for_bounds(&solid.bbox(), resolution).expect("bounded solid");
-    let (mesh, _) =
-        mesh_sparse(&solid.compile(), spec, &SparseOptions::default()).expect("not cancelled");
+    let options = MeshOptions::new(resolution).no_refinement();
+    let mesh = mesh_solid(solid, &options).expect("bounded solid").mesh;
     let report = TopologyReport::of(&mesh);
     assert_eq!(
         (

@@ -1,12 +1,49 @@
 //! The solid model of solidkit: CSG trees of primitives, evaluated as signed fields.
 //!
-//! A [`Solid`] is a tree of primitives (sphere, box, cylinder, cone, torus, half-space), Booleans
-//! (union, intersection, difference, n-ary) and transforms. Its field is negative inside, positive
-//! outside and a distance bound everywhere (Lipschitz constant 1). For many evaluations lower it to
-//! a [`Program`] with [`Solid::compile`]; the [`json`] module reads and writes the JSON tree format.
+//! # A tour of the data flow
+//!
+//! 1. **Build** a [`Solid`]: a tree of [`Primitive`]s combined by Booleans (union, intersection,
+//!    difference, their n-ary and smooth forms) and [`Transform`]s. The primitives are the
+//!    quadrics (sphere, cuboid, cylinder, cone, torus, ellipsoid, the general 10-coefficient
+//!    [`primitive::quadric`]), half-spaces, gyroids, blobby metaballs ([`primitive::blob`]),
+//!    sweeps ([`primitive::sweep`]: extrusions, revolutions, sweeps along curves, ruled surfaces,
+//!    lofts, over the curves of [`curve`] and profiles of [`profile`]), polyhedra ([`polyhedra`]:
+//!    Platonic solids and duals, prisms, any closed mesh through a BVH of its triangles in
+//!    [`bvh`]) and height fields. Build trees in code ([`Solid::sphere`], [`Solid::union`], …) or
+//!    read them from the JSON tree format with [`json`]; files a tree names are read through the
+//!    confined access of [`files`].
+//! 2. **Check** it with [`Solid::validate`] (typed [`KernelError`]s) and bound it with
+//!    [`Solid::bbox`].
+//! 3. **Lower** it to a [`Program`] with [`Solid::compile`]: a flat list of [`Instr`]uctions over
+//!    registers. A program evaluates a field value at a point (`value`), values over slices of
+//!    points in single precision (`eval_many`, vectorized), gradients, and an [`Interval`] over
+//!    a box (`interval_with`) after which `prune` returns a shorter program valid in that box.
+//!    The field is negative inside and a distance bound everywhere; exact zeros are settled
+//!    symbolically (`program::perturb`) so coincident faces never invent surfaces.
+//! 4. **Mesh** it: the `solidkit-meshing` crate polygonizes a program on a grid (its `pipeline`
+//!    module is the one path), and [`tessellate`] and [`patch`] give exact triangulations of
+//!    surfaces where one exists.
 //!
 //! Every whole-tree operation (build, clone, drop, compare, validate, lower, evaluate, read, write)
 //! uses explicit work lists, so trees of any depth are safe.
+//!
+//! ```
+//! use glam::DVec3;
+//! use solidkit_kernel::{Aabb, Solid};
+//!
+//! // A unit cube with a hole of radius 0.25 drilled along z.
+//! let cube = Solid::cuboid(DVec3::ONE);
+//! let drill = Solid::cylinder(0.25, 2.0);
+//! let part = cube.difference(&drill);
+//! part.validate().unwrap();
+//!
+//! let program = part.compile();
+//! assert!(program.value(DVec3::new(0.4, 0.4, 0.0)) < 0.0); // in the material
+//! assert!(program.value(DVec3::ZERO) > 0.0); // in the hole
+//! // Over a box inside the hole the field is positive everywhere.
+//! let hole = Aabb::new(DVec3::splat(-0.1), DVec3::splat(0.1));
+//! assert!(program.interval(&hole).lo > 0.0);
+//! ```
 #![warn(missing_docs)]
 
 mod aabb;
