@@ -8,7 +8,7 @@
 //! of the field an infinitesimal step away, along a fixed generic direction [`PERTURBATION`]:
 //! `sign f(p + ε·d)` for ε → 0⁺.
 //!
-//! [`Program::inside_at_zero`] evaluates that limit through the program as a pair per value,
+//! [`Program::zero_side`] evaluates that limit through the program as a pair per value,
 //! `(f(p), ∂f/∂d(p))`, compared lexicographically: `min`/`max` of two operands whose values tie
 //! (within [`tie_tolerance`], the single-precision noise band the samplers snap to zero) keep the
 //! one with the smaller (larger) directional derivative, which is what `min`/`max` of
@@ -29,7 +29,7 @@
 //! line) rather than a shared face. The solid there is then decided by its regularised meaning:
 //! the point is settled with the solid's interior only if the solid has no exterior points on both
 //! sides of it, along a direction of the contact plane or one of the 13 lattice axes
-//! ([`Program::contact_probe`]: points `1e-5` of the scale away: beyond rounding noise by far, beside a shared face's rim only within that
+//! (`Program::contact_probe`: points `1e-5` of the scale away: beyond rounding noise by far, beside a shared face's rim only within that
 //! distance, and within a third of the interval margin, so pruned programs probe as the full one). A shared face keeps its samples inside (the union is one solid); a pinch takes them
 //! outside (tangent balls stay two shells, as every exact Boolean engine has them; so do cubes sharing
 //! only an edge); dually for

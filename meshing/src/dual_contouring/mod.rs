@@ -1,13 +1,13 @@
 //! Dual contouring that is always manifold, keeps sharp features, and adapts to an error budget.
 //!
 //! Per cell, the surface patches come from the cell's configuration (corner signs, and the
-//! asymptotic decider on ambiguous faces) exactly as the marching-cubes loops do ([`patches`]),
+//! asymptotic decider on ambiguous faces) exactly as the marching-cubes loops do (`patches`),
 //! so both methods give the same topology on the same samples: one vertex per patch, placed at the minimiser of a QEF built from the
 //! crossings of the patch's edges (points found on the real field by safeguarded Newton steps,
-//! normals from the gradient; [`crossing`], [`qef`]), solved with a rank-revealing
+//! normals from the gradient; `crossing`, `qef`), solved with a rank-revealing
 //! eigen-decomposition about the mass point and clamped into the cell. Every sign-changing grid
-//! edge becomes one polygon through the patch vertices of its four cells ([`contour`]), split into
-//! triangles along the diagonal that agrees best with the surface normal ([`emit`]).
+//! edge becomes one polygon through the patch vertices of its four cells (`contour`), split into
+//! triangles along the diagonal that agrees best with the surface normal (`emit`).
 //!
 //! Manifold by construction: the polygons are the dual of the marching-cubes surface, a closed
 //! 2-manifold, so each dual edge lies in exactly two polygons. The only way two polygons can share
@@ -15,15 +15,15 @@
 //! such a face gets one vertex per segment and the polygons through it are fanned from a centre
 //! vertex, so no mesh edge ever has more than two triangles and every vertex link is one cycle.
 //!
-//! Free of self-intersections by construction ([`certify`]): every piece of surface inside a cell
+//! Free of self-intersections by construction (`certify`): every piece of surface inside a cell
 //! lies in a cone from the cell's patch vertex (kept strictly inside the cell) over a zone of the
 //! cell's boundary, and the zones of different crossing edges are disjoint. A quad stays two
 //! triangles only where a local test shows its pieces keep to their cones; otherwise it is fanned
 //! from its crossing, which always does. Cells with several patches keep each patch on its own
 //! side of a separating plane, and dual edges whose face crossing breaks the zones are routed
-//! through a face vertex ([`faces`]).
+//! through a face vertex (`faces`).
 //!
-//! `tolerance` collapses octree nodes topology-safely within the error budget ([`adapt`]); the
+//! `tolerance` collapses octree nodes topology-safely within the error budget (`adapt`); the
 //! result is checked for non-manifold vertices and (exactly) for crossing triangles, and nodes
 //! next to either are not collapsed.
 //!

@@ -141,7 +141,7 @@ pub struct WriteOptions {
 }
 
 /// Reads a mesh file, in the format named by its extension: a regular file (no device, FIFO or
-/// directory) of at most [`DEFAULT_MAX_FILE_BYTES`](solidkit_kernel::files::DEFAULT_MAX_FILE_BYTES).
+/// directory) of at most [`DEFAULT_MAX_FILE_BYTES`].
 pub fn read_mesh(path: &Path) -> Result<IndexedMesh, MeshIoError> {
     let format = MeshFormat::from_path(path)?;
     let bytes = read_regular_file(path, DEFAULT_MAX_FILE_BYTES)?;

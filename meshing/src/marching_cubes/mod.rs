@@ -2,7 +2,7 @@
 //! grid, for every sign pattern.
 //!
 //! [`table`] generates the case table from a face rule that neighbouring cells agree on;
-//! [`grid`] samples a field in parallel; [`polygonize`] turns samples into triangles with vertices
+//! [`samples`] samples a field in parallel over a [`GridSpec`]; [`polygonize`] turns samples into triangles with vertices
 //! shared by construction. [`mesh_field`] runs the whole path.
 
 pub mod polygonize;

@@ -19,7 +19,7 @@ use crate::topology::is_usable;
 /// Seed of the area samples' random stream.
 const SEED: u64 = 0x5EED_0F5A_3FAC_E5E5;
 
-/// Sample points of a surface; see the [module docs](self).
+/// Sample points of a surface; see the [`crate::measure`] docs.
 #[derive(Debug, Clone, Default, PartialEq)]
 pub struct SurfaceSamples {
     /// Every vertex used by a usable triangle, in index order.

@@ -14,7 +14,7 @@ use crate::topology::is_usable;
 /// Most triangles per leaf.
 const LEAF_SIZE: u32 = 4;
 
-/// A triangle mesh ready for distance queries; see the [module docs](self).
+/// A triangle mesh ready for distance queries; see the [`crate::measure`] docs.
 pub struct TriangleTree {
     /// The tree over the usable triangles.
     bvh: TriangleBvh,
