@@ -3,66 +3,18 @@
 //! ([`super::certify`]), or a polygon fanned from the edge's crossing (through face vertices where
 //! a side crosses a split face or is routed, [`super::faces`]); then places the face vertices.
 
-use super::block::{Block, NO_VERTEX, OwnedEdge};
+use super::block::{Block, OwnedEdge};
+use super::cells::{BlockIndex, CellRef, Cells, FaceKey};
 use super::certify::{EPS, EdgeFrame, FaceKind, RingFace, certify};
 use super::crossing::DcField;
 use super::faces::{DualFace, face_vertex};
-use super::patches::{Config, NO_PATCH, edge_number, face_segment, patch_table};
+use super::patches::{NO_PATCH, edge_number, face_segment, patch_table};
 use crate::grid::GridSpec;
 use glam::DVec3;
 use rayon::prelude::*;
-use std::collections::HashMap;
-
-/// Finds a block by its coordinates: a dense table when small enough, else a hash map.
-pub(crate) enum BlockIndex {
-    Dense { dims: [usize; 3], slots: Vec<u32> },
-    Sparse(HashMap<[usize; 3], u32>),
-}
-
-impl BlockIndex {
-    pub fn new(blocks: &[Block], dims: [usize; 3]) -> Self {
-        let total = dims[0].saturating_mul(dims[1]).saturating_mul(dims[2]);
-        if total <= 1 << 22 {
-            let mut slots = vec![u32::MAX; total];
-            for (b, o) in blocks.iter().enumerate() {
-                slots[o.coord[0] + dims[0] * (o.coord[1] + dims[1] * o.coord[2])] = b as u32;
-            }
-            BlockIndex::Dense { dims, slots }
-        } else {
-            BlockIndex::Sparse(
-                blocks
-                    .iter()
-                    .enumerate()
-                    .map(|(b, o)| (o.coord, b as u32))
-                    .collect(),
-            )
-        }
-    }
-
-    pub fn get(&self, c: [usize; 3]) -> Option<usize> {
-        match self {
-            BlockIndex::Dense { dims, slots } => {
-                if (0..3).any(|a| c[a] >= dims[a]) {
-                    return None;
-                }
-                let s = slots[c[0] + dims[0] * (c[1] + dims[1] * c[2])];
-                (s != u32::MAX).then_some(s as usize)
-            }
-            BlockIndex::Sparse(map) => map.get(&c).map(|&b| b as usize),
-        }
-    }
-}
 
 /// One block's quads, and its polygons through split faces (with their crossing points).
 type BlockPolygons = (Vec<Quad>, Vec<(Vec<Corner>, DVec3)>);
-
-/// A split-face vertex: the face above `cell` along `axis`, and which of its two segments.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Hash)]
-pub(crate) struct FaceKey {
-    pub cell: [usize; 3],
-    pub axis: u8,
-    pub segment: u8,
-}
 
 /// A polygon corner before split-face vertices are numbered.
 #[derive(Debug, Clone, Copy)]
@@ -136,44 +88,6 @@ pub(crate) struct Contour {
     pub quads: Vec<Vec<Quad>>,
     /// Fanned polygons.
     pub specials: Vec<Special>,
-}
-
-/// A surface cell found through the block index.
-#[derive(Debug, Clone, Copy)]
-pub(crate) struct CellRef {
-    pub block: usize,
-    pub local: usize,
-    /// The cell's configuration (sign mask and joined faces).
-    pub config: Config,
-    /// Global number of the cell's first patch vertex.
-    pub first: u32,
-}
-
-/// Looks up cells by global coordinates.
-pub(crate) struct Cells<'a> {
-    pub blocks: &'a [Block],
-    pub index: BlockIndex,
-    pub bases: Vec<u32>,
-    pub block_size: usize,
-}
-
-impl Cells<'_> {
-    pub fn get(&self, c: [usize; 3]) -> Option<CellRef> {
-        let b = self.index.get(c.map(|x| x / self.block_size))?;
-        let o = &self.blocks[b];
-        let l = [0, 1, 2].map(|a| c[a] - o.min[a]);
-        if (0..3).any(|a| l[a] >= o.extent[a]) {
-            return None;
-        }
-        let local = o.cell_index(l);
-        let first = o.first[local];
-        (first != NO_VERTEX).then(|| CellRef {
-            block: b,
-            local,
-            config: o.configs[local],
-            first: self.bases[b] + first,
-        })
-    }
 }
 
 /// Builds the polygons of every block's owned edges and places the split-face vertices.

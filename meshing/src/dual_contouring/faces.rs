@@ -14,8 +14,8 @@
 //! crossings, which always does (each crossing is strictly inside its edge, on its patch's side).
 
 use super::block::local_edge;
+use super::cells::{Cells, FaceKey};
 use super::certify::EPS;
-use super::contour::{Cells, FaceKey};
 use super::patches::{
     Config, NO_PATCH, Separator, cut_corner, edge_number, face_edges, face_segment, patch_table,
 };

@@ -28,12 +28,13 @@
 //! next to either are not collapsed.
 //!
 //! Files: `patches.rs` (cell patch table, separating planes), `qef.rs`, `crossing.rs`,
-//! `block.rs` (one brick or tile), `sources.rs` (sparse octree or dense grid), `contour.rs`
-//! (polygons), `certify.rs` (why no triangles cross; the quad certificate), `faces.rs` (face
-//! vertices), `emit.rs` (triangles), `adapt.rs` (simplification).
+//! `block.rs` (one brick or tile), `sources.rs` (sparse octree or dense grid), `cells.rs` (cells
+//! by global coordinates), `contour.rs` (polygons), `certify.rs` (why no triangles cross; the quad
+//! certificate), `faces.rs` (face vertices), `emit.rs` (triangles), `adapt.rs` (simplification).
 
 mod adapt;
 mod block;
+mod cells;
 mod certify;
 mod contour;
 mod crossing;
@@ -92,7 +93,7 @@ pub fn mesh_dc_into(
     let triangles = match opts.tolerance {
         Some(tol) => {
             let dims = spec.cells.map(|c| c.div_ceil(brick).max(1));
-            let index = contour::BlockIndex::new(&blocks, dims);
+            let index = cells::BlockIndex::new(&blocks, dims);
             let mut signs = sources::SparseSigns {
                 blocks: &blocks,
                 index: &index,

@@ -132,7 +132,7 @@ impl Signs for &SampleGrid {
 /// in a box the octree culled, whose samples all share one sign) the full program's f32 value.
 pub(crate) struct SparseSigns<'a> {
     pub blocks: &'a [Block],
-    pub index: &'a super::contour::BlockIndex,
+    pub index: &'a super::cells::BlockIndex,
     pub block_size: usize,
     pub program: &'a Program,
     pub spec: GridSpec,

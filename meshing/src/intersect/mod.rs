@@ -41,7 +41,6 @@ use rayon::prelude::*;
 
 use crate::IndexedMesh;
 use crate::measure::MeasureError;
-use crate::topology::is_usable;
 use copies::Copies;
 use morton::{Box32, LEAF, LeafTree, curve_order};
 use triangles::{Tri, meet_beyond_shared};
@@ -68,6 +67,14 @@ impl SelfIntersections {
         self.examples.truncate(limit);
         self
     }
+}
+
+/// True when the triangle's indices are inside a vertex array of `vertex_count` and distinct.
+///
+/// Only such triangles take part in adjacency and measures.
+pub(crate) fn is_usable(tri: &[u32; 3], vertex_count: usize) -> bool {
+    let [a, b, c] = *tri;
+    tri.iter().all(|&i| (i as usize) < vertex_count) && a != b && b != c && a != c
 }
 
 /// The self-intersections of `mesh`, with at most `limit` example pairs. Fails only when a vertex

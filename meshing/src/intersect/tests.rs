@@ -463,3 +463,11 @@ fn many_coincident_triangles_are_fast() {
     assert_eq!(got.count, 40_000 * 39_999 / 2);
     assert_eq!(got.examples, [[0, 1], [0, 2], [0, 3], [0, 4]]);
 }
+
+#[test]
+fn usable_requires_range_and_distinct_indices() {
+    assert!(is_usable(&[0, 1, 2], 3));
+    assert!(!is_usable(&[0, 1, 3], 3));
+    assert!(!is_usable(&[0, 1, 1], 3));
+    assert!(!is_usable(&[2, 1, 2], 3));
+}

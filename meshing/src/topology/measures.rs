@@ -8,20 +8,13 @@ use rayon::prelude::*;
 
 use super::MAX_EXAMPLES;
 use crate::IndexedMesh;
+use crate::intersect::is_usable;
 
 /// Triangles per parallel work item.
 const CHUNK: usize = 1 << 14;
 
 /// Relative area threshold of a degenerate face: `|cross| <= EPS * longest_edge²`.
 const DEGENERATE_EPS: f64 = 1e-12;
-
-/// True when the triangle's indices are inside a vertex array of `vertex_count` and distinct.
-///
-/// Only such triangles take part in adjacency and measures.
-pub(crate) fn is_usable(tri: &[u32; 3], vertex_count: usize) -> bool {
-    let [a, b, c] = *tri;
-    tri.iter().all(|&i| (i as usize) < vertex_count) && a != b && b != c && a != c
-}
 
 /// The measures of one mesh.
 #[derive(Debug, Clone, PartialEq)]
@@ -144,17 +137,9 @@ fn bounding_box(positions: &[DVec3], referenced: impl Fn(usize) -> bool + Sync) 
 
 #[cfg(test)]
 mod tests {
-    use super::{Measures, is_usable};
+    use super::Measures;
     use crate::IndexedMesh;
     use glam::DVec3;
-
-    #[test]
-    fn usable_requires_range_and_distinct_indices() {
-        assert!(is_usable(&[0, 1, 2], 3));
-        assert!(!is_usable(&[0, 1, 3], 3));
-        assert!(!is_usable(&[0, 1, 1], 3));
-        assert!(!is_usable(&[2, 1, 2], 3));
-    }
 
     #[test]
     fn single_triangle_area_and_degenerates() {

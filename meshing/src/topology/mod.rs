@@ -44,11 +44,10 @@ use rayon::prelude::*;
 
 pub use defects::{DefectItems, MAX_DEFECT_PAIRS};
 pub(crate) use edges::{CornerLoops, EdgeKind, EdgeTable};
-pub(crate) use measures::is_usable;
 pub(crate) use vertices::fan_counts;
 
 use crate::IndexedMesh;
-use crate::intersect::self_intersections;
+use crate::intersect::{is_usable, self_intersections};
 use measures::Measures;
 use shells::{ShellTally, Shells};
 

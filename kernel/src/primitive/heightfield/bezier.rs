@@ -5,7 +5,7 @@
 //! extremes of their coefficients.
 
 use super::grid::HeightGrid;
-use super::source::{ParamBounds, ParamDerivatives};
+use super::param::{ParamBounds, ParamDerivatives};
 use crate::patch::bernstein::tensor_sum;
 
 /// `h(u, v)`.

@@ -15,6 +15,7 @@
 mod bezier;
 mod error;
 mod grid;
+mod param;
 mod png_map;
 mod sampled;
 mod source;
@@ -28,7 +29,7 @@ use super::{Cuboid, PrimitiveError, Shape};
 use crate::patch::curvature::{Curvature, HeightDerivatives, monge_curvature};
 use crate::{Aabb, Interval};
 use glam::{DVec2, DVec3};
-use source::ParamBounds;
+use param::ParamBounds;
 use std::path::Path;
 
 /// Where a height field's samples were read from, kept so the JSON tree can name the file again.

@@ -5,7 +5,7 @@
 //! convex-hull property of its (differenced) control net.
 
 use super::grid::HeightGrid;
-use super::source::{ParamBounds, ParamDerivatives};
+use super::param::{ParamBounds, ParamDerivatives};
 
 /// The cell containing parameter `u` along an axis of `n` samples, and the local parameter.
 #[inline]

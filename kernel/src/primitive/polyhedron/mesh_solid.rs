@@ -20,8 +20,8 @@
 //! cheap, and equality compares descriptions, not trees.
 
 use super::super::{PrimitiveError, Shape, lipschitz_interval};
+use super::request::SubdivisionScheme;
 use super::resolver::MeshResolver;
-use super::subdivided::SubdivisionScheme;
 use super::tree::MeshTree;
 use crate::polyhedra::{Polyhedron, PolyhedronError, Prism};
 use crate::primitive::Primitive;

@@ -15,6 +15,7 @@ mod build;
 mod mesh_solid;
 mod nearest;
 mod platonic;
+mod request;
 mod resolver;
 mod subdivided;
 mod tree;
@@ -29,5 +30,5 @@ mod tests;
 
 pub use mesh_solid::{MeshSolid, MeshSolidError, MeshSource};
 pub use platonic::Platonic;
+pub use request::{SubdivisionInput, SubdivisionRequest, SubdivisionScheme};
 pub use resolver::{MeshResolver, NoMeshResolver};
-pub use subdivided::{SubdivisionInput, SubdivisionRequest, SubdivisionScheme};

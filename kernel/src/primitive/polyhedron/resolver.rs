@@ -7,7 +7,7 @@
 //! files relative to the tree file's folder (confined to it, see [`crate::files::FileAccess`]) and
 //! subdivides on its half-edge mesh.
 
-use super::subdivided::SubdivisionRequest;
+use super::request::SubdivisionRequest;
 use crate::IndexedMesh;
 
 /// Loads the mesh named by a `mesh` node's `path` and the height map of a `heightfield` node's
