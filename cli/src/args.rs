@@ -229,7 +229,7 @@ pub enum FacetsArg {
     Openscad,
 }
 
-impl From<FacetsArg> for crate::frontends::csg::Facets {
+impl From<FacetsArg> for solidkit_frontends::csg::Facets {
     fn from(f: FacetsArg) -> Self {
         match f {
             FacetsArg::Exact => Self::Exact,

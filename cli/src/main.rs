@@ -6,7 +6,6 @@
 mod args;
 mod commands;
 mod escape;
-mod frontends;
 mod input;
 mod output;
 mod progress;

@@ -66,13 +66,9 @@ pub fn run(a: &RenderArgs) -> Result<u8> {
     Ok(0)
 }
 
-/// True for the inputs rendered from their field (by extension).
+/// True for the inputs rendered from their field (by extension: the front ends' formats).
 fn is_solid(path: &Path) -> bool {
-    let ext = path
-        .extension()
-        .and_then(|e| e.to_str())
-        .map(str::to_ascii_lowercase);
-    matches!(ext.as_deref(), Some("json" | "rhai" | "csg"))
+    solidkit_frontends::load::Format::from_path(path).is_ok()
 }
 
 /// `--bounds` as a box.

@@ -3,7 +3,9 @@
 //! depth, expression depth, sizes, wall-clock time and tree size).
 //!
 //! The script's value is the solid passed to its last `export(solid)` call, or else the value of
-//! its last expression.
+//! its last expression. What the script prints (`print`, `debug`) goes to the
+//! [`ScriptOptions::print`] sink, or nowhere: the library never writes to standard output or
+//! standard error itself.
 
 mod api;
 mod error;
@@ -13,7 +15,7 @@ mod shape;
 mod tests;
 
 pub use error::ScriptError;
-pub use shape::Shape;
+use shape::Shape;
 
 use ::rhai::packages::{Package, StandardPackage};
 use ::rhai::{Dynamic, Engine, Scope};
@@ -25,6 +27,7 @@ use std::time::{Duration, Instant};
 
 /// The limits of the sandbox.
 #[derive(Debug, Clone, Copy, PartialEq)]
+#[non_exhaustive]
 pub struct Limits {
     /// Most operations (Rhai's count of evaluation steps) a script may take.
     pub max_operations: u64,
@@ -80,14 +83,39 @@ pub(super) fn check_deadline() -> shape::Fallible<()> {
 /// Stack of the thread that runs a script: deep (but limited) Rhai recursion must not overflow.
 const STACK_SIZE: usize = 64 << 20;
 
-/// Runs the script `source` (named `file` in errors) with the default [`Limits`]; `mesh` nodes
-/// load their files through `resolver`.
+/// Where the lines a script prints go: `print(x)` passes the text of `x`, `debug(x)` passes the
+/// place of the call as Rhai writes it (`LINE:COLUMN`), `: ` and the debug text of `x`.
+/// The text is the script's own and may hold any character (newlines, escape sequences): a sink
+/// that writes to a terminal should escape it.
+pub type PrintSink = Arc<dyn Fn(&str) + Send + Sync>;
+
+/// How a script runs: the sandbox's limits and where its output goes.
+#[derive(Clone, Default)]
+#[non_exhaustive]
+pub struct ScriptOptions {
+    /// The limits of the sandbox.
+    pub limits: Limits,
+    /// Receives each line printed by `print` and `debug`; `None` discards them.
+    pub print: Option<PrintSink>,
+}
+
+impl std::fmt::Debug for ScriptOptions {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.debug_struct("ScriptOptions")
+            .field("limits", &self.limits)
+            .field("print", &self.print.as_ref().map(|_| "Fn(&str)"))
+            .finish()
+    }
+}
+
+/// Runs the script `source` (named `file` in errors) with the default [`Limits`], its printed
+/// output discarded; `mesh` nodes load their files through `resolver`.
 pub fn eval(
     source: &str,
     file: &str,
     resolver: Arc<dyn MeshResolver + Send + Sync>,
 ) -> Result<Solid, ScriptError> {
-    eval_with(source, file, resolver, Limits::default())
+    eval_with_options(source, file, resolver, &ScriptOptions::default())
 }
 
 /// Runs the script `source` like [`eval`], with the given limits.
@@ -97,11 +125,25 @@ pub fn eval_with(
     resolver: Arc<dyn MeshResolver + Send + Sync>,
     limits: Limits,
 ) -> Result<Solid, ScriptError> {
+    let options = ScriptOptions {
+        limits,
+        ..ScriptOptions::default()
+    };
+    eval_with_options(source, file, resolver, &options)
+}
+
+/// Runs the script `source` like [`eval`], with the given limits and print sink.
+pub fn eval_with_options(
+    source: &str,
+    file: &str,
+    resolver: Arc<dyn MeshResolver + Send + Sync>,
+    options: &ScriptOptions,
+) -> Result<Solid, ScriptError> {
     std::thread::scope(|s| {
         std::thread::Builder::new()
             .name("rhai".into())
             .stack_size(STACK_SIZE)
-            .spawn_scoped(s, || run(source, file, resolver, limits))
+            .spawn_scoped(s, || run(source, file, resolver, options))
             .map_err(|e| ScriptError::plain(file, format!("cannot start the script thread: {e}")))?
             .join()
             .unwrap_or_else(|_| Err(ScriptError::plain(file, "the script runner panicked")))
@@ -112,11 +154,12 @@ fn run(
     source: &str,
     file: &str,
     resolver: Arc<dyn MeshResolver + Send + Sync>,
-    limits: Limits,
+    options: &ScriptOptions,
 ) -> Result<Solid, ScriptError> {
+    let limits = options.limits;
     let exported = Arc::new(Mutex::new(None::<Shape>));
     DEADLINE.set(Some((Instant::now() + limits.max_time, limits.max_time)));
-    let engine = engine(&limits, resolver, exported.clone());
+    let engine = engine(&limits, options.print.clone(), resolver, exported.clone());
     let ast = engine
         .compile(source)
         .map_err(|e| error::from_parse(source, file, &e, &limits))?;
@@ -141,6 +184,7 @@ fn run(
 /// its arguments, outside Rhai's size limits: `f = f.curry(f)` doubles memory per step).
 fn engine(
     limits: &Limits,
+    print: Option<PrintSink>,
     resolver: Arc<dyn MeshResolver + Send + Sync>,
     exported: Arc<Mutex<Option<Shape>>>,
 ) -> Engine {
@@ -166,8 +210,18 @@ fn engine(
     engine.on_progress(move |ops| {
         (ops % 1024 == 0 && start.elapsed() > max_time).then(|| Dynamic::from(error::TIMEOUT))
     });
-    engine.on_print(|s| crate::output::errln!("{}", crate::escape::one_line(s)));
-    engine.on_debug(|s, _, pos| crate::output::errln!("{pos:?}: {}", crate::escape::one_line(s)));
+    // Rhai's default hooks write to standard output: replaced even without a sink.
+    match print {
+        Some(sink) => {
+            let debug_sink = sink.clone();
+            engine.on_print(move |s| sink(s));
+            engine.on_debug(move |s, _, pos| debug_sink(&format!("{pos:?}: {s}")));
+        }
+        None => {
+            engine.on_print(|_| {});
+            engine.on_debug(|_, _, _| {});
+        }
+    }
     api::register(&mut engine, limits.max_nodes, resolver, exported);
     engine
 }

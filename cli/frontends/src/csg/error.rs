@@ -20,6 +20,7 @@ impl std::fmt::Display for Pos {
 /// Why a `.csg` file could not be imported. Displayed as `line:col: problem`, so a caller
 /// prefixing the file name gets `model.csg:12:3: unsupported OpenSCAD construct 'minkowski'`.
 #[derive(Debug, Clone, PartialEq, Error)]
+#[non_exhaustive]
 pub enum CsgError {
     /// The text is not in OpenSCAD's `.csg` syntax.
     #[error("{pos}: syntax error: {message}")]

@@ -163,7 +163,7 @@ const FAMILY_SAMPLES: [&str; 14] = [
 /// Every family through `node(map)`: the samples above and the sweep and polyhedron fixtures.
 #[test]
 fn every_family_through_node_matches_json() {
-    let fixtures = Path::new(env!("CARGO_MANIFEST_DIR")).join("../fixtures");
+    let fixtures = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../fixtures");
     let mut texts: Vec<(String, FileMeshResolver)> = FAMILY_SAMPLES
         .iter()
         .map(|t| (t.to_string(), FileMeshResolver::new(&fixtures)))

@@ -3,7 +3,7 @@
 //! `cylinder`, `polyhedron`, `circle`, `square`, `polygon`, `linear_extrude`, `rotate_extrude`,
 //! `color`, `render`, `hull`, `minkowski`, `import`, `surface`, `offset`) to a [`Solid`].
 //!
-//! Pipeline: [`lexer`] (tokens with line/column) → [`parser`] (an arena of statements, explicit
+//! Pipeline: `lexer` (tokens with line/column) → `parser` (an arena of statements, explicit
 //! stacks, so any nesting depth is safe) → `convert` (post-order over a work list).
 //!
 //! OpenSCAD's semantics: the modifiers `%` (background) and `*` (disabled) leave their subtree
@@ -26,38 +26,39 @@
 //! Extrusions are exact sweeps of the profile (OpenSCAD's `slices` is ignored; `scale = 0` is a
 //! cone to the apex), and 2D Booleans under an extrusion are replayed as 3D Booleans of the swept
 //! leaves. `import` reads mesh files (`.stl`, `.off`, `.obj`, `.ply`) as solids and `.dxf`
-//! drawings as 2D regions ([`import`], [`dxf`]), `surface` reads `.dat` height maps
-//! ([`surface`]), both relative to the `.csg` file's folder under the confinement rules of
+//! drawings as 2D regions (`import.rs`, `dxf.rs`), `surface` reads `.dat` height maps
+//! (`surface.rs`), both relative to the `.csg` file's folder under the confinement rules of
 //! `solidkit_kernel::files` (`--allow-path` widens them); `offset` is exact where the result is a
-//! union of leaves or one convex leaf ([`offset`]). Unsupported constructs (`text`,
+//! union of leaves or one convex leaf (`offset.rs`). Unsupported constructs (`text`,
 //! `projection`, `resize`, `surface` of a PNG, `offset` that would need polygon clipping, unknown
 //! modules) are errors naming the construct and its line.
 
-pub mod args;
+mod args;
 mod convert;
-pub mod dxf;
-pub mod error;
-pub mod facets;
-pub mod flat;
-pub mod hull;
-pub mod import;
-pub mod lexer;
-pub mod offset;
-pub mod parser;
-pub mod surface;
+mod dxf;
+mod error;
+mod facets;
+mod flat;
+mod hull;
+mod import;
+mod lexer;
+mod offset;
+mod parser;
+mod surface;
 
 #[cfg(test)]
 mod fuzz;
 #[cfg(test)]
 mod tests;
 
-pub use error::{CsgError, Warning};
+pub use error::{CsgError, Pos, Warning};
 
 use solidkit_kernel::Solid;
 use solidkit_kernel::primitive::MeshResolver;
 
 /// How round primitives are built.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+#[non_exhaustive]
 pub enum Facets {
     /// Exact spheres, cylinders, cones and discs.
     #[default]

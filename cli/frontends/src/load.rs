@@ -1,0 +1,329 @@
+//! Loading a solid from a file by its extension (`.json` tree, `.rhai` script, `.csg` file), or
+//! from text in a given [`Format`]; the solid comes back validated, with the front end's
+//! warnings.
+//!
+//! The input is read as a regular file within the size cap; the files it names (`mesh` and
+//! `heightfield` `png` paths in JSON trees and Rhai scripts, `import()` and `surface()` in `.csg`
+//! files) resolve relative to its folder and may not leave it, except into the folders of
+//! [`LoadOptions::allow`] (the CLI's `--allow-path`). See `solidkit_kernel::files`.
+//!
+//! Every [`LoadError`] is one message naming the file and, where known, the place in it:
+//! `FILE:LINE:COLUMN: problem`.
+
+use crate::csg::{self, CsgError, Facets};
+use crate::rhai::{self, ScriptError, ScriptOptions};
+use solidkit_kernel::files::{DEFAULT_MAX_FILE_BYTES, FileAccess, FileError, read_regular_file};
+use solidkit_kernel::{KernelError, Solid, json};
+use solidkit_meshing::io::FileMeshResolver;
+use std::path::{Path, PathBuf};
+use std::sync::Arc;
+
+/// The languages a solid can be read from.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+#[non_exhaustive]
+pub enum Format {
+    /// solidkit's JSON tree (`.json`).
+    Json,
+    /// A Rhai script (`.rhai`), see [`crate::rhai`].
+    Rhai,
+    /// An OpenSCAD `.csg` file, see [`crate::csg`].
+    Csg,
+}
+
+impl Format {
+    /// The format of a file extension (without the dot, any case), if it is one of ours.
+    pub fn from_extension(extension: &str) -> Option<Format> {
+        match extension.to_ascii_lowercase().as_str() {
+            "json" => Some(Format::Json),
+            "rhai" => Some(Format::Rhai),
+            "csg" => Some(Format::Csg),
+            _ => None,
+        }
+    }
+
+    /// The format of the file `path`, by its extension.
+    pub fn from_path(path: &Path) -> Result<Format, LoadError> {
+        let name = path.display().to_string();
+        match path.extension().and_then(|e| e.to_str()) {
+            None => Err(LoadError::NoExtension { name }),
+            Some(ext) => Format::from_extension(ext).ok_or_else(|| LoadError::UnsupportedFormat {
+                name,
+                extension: ext.to_ascii_lowercase(),
+            }),
+        }
+    }
+}
+
+/// How a solid is loaded.
+#[derive(Debug, Clone)]
+#[non_exhaustive]
+pub struct LoadOptions {
+    /// How the round primitives of `.csg` files are built (default: exact).
+    pub facets: Facets,
+    /// Folders, besides the input's own, that the files it names may come from (the CLI's
+    /// `--allow-path`); each must exist.
+    pub allow: Vec<PathBuf>,
+    /// For [`load_str`]: the folder the files named in the text are relative to and confined
+    /// to (default: the current directory). [`load_path`] uses the input file's folder.
+    pub base_dir: Option<PathBuf>,
+    /// The cap on the size of the input and of every file it names, in bytes (default
+    /// [`DEFAULT_MAX_FILE_BYTES`]).
+    pub max_file_bytes: u64,
+    /// The sandbox limits of Rhai scripts and where their `print` and `debug` output goes
+    /// (default: discarded).
+    pub script: ScriptOptions,
+}
+
+impl Default for LoadOptions {
+    fn default() -> Self {
+        LoadOptions {
+            facets: Facets::default(),
+            allow: Vec::new(),
+            base_dir: None,
+            max_file_bytes: DEFAULT_MAX_FILE_BYTES,
+            script: ScriptOptions::default(),
+        }
+    }
+}
+
+/// A loaded, validated solid.
+#[derive(Debug, Clone)]
+#[non_exhaustive]
+pub struct Loaded {
+    /// The solid.
+    pub solid: Solid,
+    /// The front end's warnings, one line each as `FILE:LINE:COLUMN: problem` (parts of a `.csg`
+    /// model skipped the way OpenSCAD skips them).
+    pub warnings: Vec<String>,
+}
+
+/// Why a solid could not be loaded. Each message is complete on its own and names the file
+/// (`FILE: problem` or `FILE:LINE:COLUMN: problem`).
+#[derive(Debug, thiserror::Error)]
+#[non_exhaustive]
+pub enum LoadError {
+    /// The extension is not `.json`, `.rhai` or `.csg`.
+    #[error(
+        "{name}: unsupported input format '.{extension}' (expected a .json tree, a .rhai script or a .csg file)"
+    )]
+    UnsupportedFormat {
+        /// The input's name (its path).
+        name: String,
+        /// The extension, in lower case.
+        extension: String,
+    },
+    /// The path has no extension (or one that is not UTF-8).
+    #[error("{name}: no file extension (expected a .json tree, a .rhai script or a .csg file)")]
+    NoExtension {
+        /// The input's name (its path).
+        name: String,
+    },
+    /// A folder of [`LoadOptions::allow`] cannot be used (missing, not a folder).
+    #[error("--allow-path {error}")]
+    AllowPath {
+        /// The folder.
+        dir: PathBuf,
+        /// Why (the message includes it).
+        error: FileError,
+    },
+    /// The input cannot be read (missing, not a regular file, too large, ...).
+    #[error(transparent)]
+    Read(FileError),
+    /// The input is not UTF-8 text.
+    #[error("{name}: byte {valid_up_to}: invalid UTF-8")]
+    Utf8 {
+        /// The input's name (its path).
+        name: String,
+        /// The offset of the first invalid byte.
+        valid_up_to: usize,
+    },
+    /// A JSON tree that does not parse or names unreadable files.
+    #[error("{name}:{error}")]
+    Json {
+        /// The input's name (its path).
+        name: String,
+        /// Why, with the line and column.
+        error: KernelError,
+    },
+    /// A Rhai script that does not run to a solid (the error names the file).
+    #[error(transparent)]
+    Script(ScriptError),
+    /// A `.csg` file that cannot be imported.
+    #[error("{name}:{error}")]
+    Csg {
+        /// The input's name (its path).
+        name: String,
+        /// Why, with the line and column.
+        error: CsgError,
+    },
+    /// The solid was built but is not valid (a parameter out of range, ...).
+    #[error("{name}: {error}")]
+    Invalid {
+        /// The input's name (its path).
+        name: String,
+        /// Why, with the path of the offending node.
+        error: KernelError,
+    },
+}
+
+/// Reads and validates the solid in the file `path`, in the format of its extension; the files
+/// it names may come from its folder and the folders `options.allow`.
+pub fn load_path(path: &Path, options: &LoadOptions) -> Result<Loaded, LoadError> {
+    let format = Format::from_path(path)?;
+    let access = file_access(FileAccess::for_tree_file(path), options)?;
+    let bytes = read_regular_file(path, options.max_file_bytes).map_err(LoadError::Read)?;
+    let name = path.display().to_string();
+    let text = String::from_utf8(bytes).map_err(|e| LoadError::Utf8 {
+        name: name.clone(),
+        valid_up_to: e.utf8_error().valid_up_to(),
+    })?;
+    load_text(&text, format, &name, access, options)
+}
+
+/// Reads and validates the solid in `text`, written in `format` and called `name` in errors and
+/// warnings; the files it names resolve from `options.base_dir` (default: the current
+/// directory), confined to it and the folders `options.allow`.
+pub fn load_str(
+    text: &str,
+    format: Format,
+    name: &str,
+    options: &LoadOptions,
+) -> Result<Loaded, LoadError> {
+    let base = options
+        .base_dir
+        .clone()
+        .unwrap_or_else(|| PathBuf::from("."));
+    let access = file_access(FileAccess::new(base), options)?;
+    load_text(text, format, name, access, options)
+}
+
+/// `access` widened by the folders `options.allow`, with the size cap of `options`.
+fn file_access(access: FileAccess, options: &LoadOptions) -> Result<FileAccess, LoadError> {
+    let mut access = access.with_max_bytes(options.max_file_bytes);
+    for dir in &options.allow {
+        access = access.allow(dir).map_err(|error| LoadError::AllowPath {
+            dir: dir.clone(),
+            error,
+        })?;
+    }
+    Ok(access)
+}
+
+fn load_text(
+    text: &str,
+    format: Format,
+    name: &str,
+    access: FileAccess,
+    options: &LoadOptions,
+) -> Result<Loaded, LoadError> {
+    let resolver = FileMeshResolver::with_access(access);
+    let mut warnings = Vec::new();
+    let solid = match format {
+        Format::Rhai => rhai::eval_with_options(text, name, Arc::new(resolver), &options.script)
+            .map_err(LoadError::Script)?,
+        Format::Csg => {
+            let (solid, w) =
+                csg::import_with_warnings(text, options.facets, &resolver).map_err(|error| {
+                    LoadError::Csg {
+                        name: name.to_string(),
+                        error,
+                    }
+                })?;
+            warnings.extend(w.iter().map(|w| format!("{name}:{w}")));
+            solid
+        }
+        Format::Json => json::from_str_with(text, &resolver).map_err(|error| LoadError::Json {
+            name: name.to_string(),
+            error,
+        })?,
+    };
+    solid.validate().map_err(|error| LoadError::Invalid {
+        name: name.to_string(),
+        error,
+    })?;
+    Ok(Loaded { solid, warnings })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn formats_by_extension() {
+        assert_eq!(Format::from_extension("CSG"), Some(Format::Csg));
+        assert_eq!(
+            Format::from_path(Path::new("a.Rhai")).ok(),
+            Some(Format::Rhai)
+        );
+        let e = Format::from_path(Path::new("model.STL")).unwrap_err();
+        assert_eq!(
+            e.to_string(),
+            "model.STL: unsupported input format '.stl' (expected a .json tree, a .rhai script \
+             or a .csg file)"
+        );
+        let e = Format::from_path(Path::new("model")).unwrap_err();
+        assert!(matches!(e, LoadError::NoExtension { .. }), "{e}");
+    }
+
+    #[test]
+    fn text_in_each_format() {
+        let options = LoadOptions::default();
+        let csg = load_str("cube(size = [1, 2, 3]);", Format::Csg, "m.csg", &options).unwrap();
+        assert_eq!(csg.solid.bbox().max.to_array(), [1.0, 2.0, 3.0]);
+        let rhai = load_str("sphere(2.0)", Format::Rhai, "m.rhai", &options).unwrap();
+        assert_eq!(rhai.solid.bbox().max.to_array(), [2.0, 2.0, 2.0]);
+        let json = solidkit_kernel::json::to_string(&rhai.solid);
+        let back = load_str(&json, Format::Json, "m.json", &options).unwrap();
+        assert_eq!(back.solid, rhai.solid);
+    }
+
+    #[test]
+    fn errors_name_the_input_and_place() {
+        let options = LoadOptions::default();
+        let e = load_str("cube(", Format::Csg, "m.csg", &options).unwrap_err();
+        assert!(e.to_string().starts_with("m.csg:1:"), "{e}");
+        let e = load_str("{", Format::Json, "t.json", &options).unwrap_err();
+        assert!(e.to_string().starts_with("t.json:1:"), "{e}");
+        let e = load_str("let x = ;", Format::Rhai, "s.rhai", &options).unwrap_err();
+        assert!(e.to_string().starts_with("s.rhai:1:"), "{e}");
+    }
+
+    #[test]
+    fn warnings_carry_the_name() {
+        let text = "group() { cube(size = [1, 1, 1]); cube(size = [inf, 1, 1]); }";
+        let loaded = load_str(text, Format::Csg, "w.csg", &LoadOptions::default()).unwrap();
+        assert_eq!(loaded.warnings.len(), 1, "{:?}", loaded.warnings);
+        assert!(
+            loaded.warnings[0].starts_with("w.csg:1:"),
+            "{:?}",
+            loaded.warnings
+        );
+    }
+
+    #[test]
+    fn script_output_goes_to_the_sink() {
+        let lines = Arc::new(std::sync::Mutex::new(Vec::<String>::new()));
+        let mut options = LoadOptions::default();
+        let sink = lines.clone();
+        options.script.print = Some(Arc::new(move |s: &str| {
+            sink.lock().unwrap().push(s.to_string())
+        }));
+        let script = "print(\"hi\");\ndebug(3);\nsphere(1.0)";
+        load_str(script, Format::Rhai, "p.rhai", &options).unwrap();
+        assert_eq!(*lines.lock().unwrap(), ["hi", "2:1: 3"]);
+    }
+
+    #[test]
+    fn missing_allow_path_is_named() {
+        let mut options = LoadOptions::default();
+        options
+            .allow
+            .push(PathBuf::from("/no/such/solidkit/folder"));
+        let e = load_str("sphere(1.0)", Format::Rhai, "p.rhai", &options).unwrap_err();
+        assert!(
+            e.to_string()
+                .starts_with("--allow-path /no/such/solidkit/folder"),
+            "{e}"
+        );
+    }
+}
