@@ -144,6 +144,15 @@ pub enum Method {
     Dc,
 }
 
+impl From<Method> for solidkit_meshing::pipeline::Method {
+    fn from(m: Method) -> Self {
+        match m {
+            Method::Mc => solidkit_meshing::pipeline::Method::Mc,
+            Method::Dc => solidkit_meshing::pipeline::Method::Dc,
+        }
+    }
+}
+
 impl Method {
     /// The method's name on the command line and in JSON.
     pub fn name(self) -> &'static str {

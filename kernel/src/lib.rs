@@ -56,6 +56,7 @@ pub mod files;
 mod interval;
 pub mod json;
 mod mesh;
+#[cfg(feature = "models")]
 pub mod models;
 pub mod patch;
 pub mod polyhedra;

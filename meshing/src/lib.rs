@@ -53,6 +53,7 @@ pub mod render;
 pub mod repair;
 pub mod sink;
 pub mod subdivision;
+#[cfg(feature = "suites")]
 pub mod suites;
 pub mod topology;
 

@@ -5,7 +5,7 @@
 //!
 //! The surface is a 2-manifold exactly when no two filled voxels meet only along an edge or only
 //! at a corner with the voxels between them empty; the Menger sponges have no such contacts (see
-//! [`menger_mesh`](crate::models::menger_mesh)). Coplanar squares are not merged: a surface of
+//! `models::menger_mesh`, with the `models` feature). Coplanar squares are not merged: a surface of
 //! `S` squares has `2S` triangles and `3S` edges.
 
 use crate::IndexedMesh;

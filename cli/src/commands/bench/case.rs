@@ -9,9 +9,7 @@ use serde::{Deserialize, Serialize};
 use serde_json::{Value, json};
 use solidkit_kernel::models::Model;
 use solidkit_meshing::TopologyReport;
-use solidkit_meshing::dual_contouring::{DcOptions, mesh_dc};
-use solidkit_meshing::marching_cubes::GridSpec;
-use solidkit_meshing::octree::{SparseOptions, mesh_sparse};
+use solidkit_meshing::pipeline::{Domain, MeshOptions, mesh_solid};
 use std::time::Instant;
 
 /// The check of a case's mesh.
@@ -135,21 +133,21 @@ pub fn run(
     method: Method,
     measure_memory: bool,
 ) -> Result<CaseResult> {
-    let spec = GridSpec::covering(&model.domain, resolution)
-        .map_err(|e| anyhow!("{} at {resolution}: {e}", model.name))?;
+    // Exactly `resolution` cells over the model's domain, no refinement: the benchmark grid.
+    let options = MeshOptions::new(resolution)
+        .method(method.into())
+        .domain(Domain::Covering(model.domain))
+        .no_refinement();
     let mut times_s = Vec::new();
     let mut last = None;
     for _ in 0..repeat.max(1) {
         // Free the previous mesh first so the peak is that of one run.
         drop(last.take());
         let start = Instant::now();
-        let program = model.solid.compile();
-        let (mesh, stats) = match method {
-            Method::Mc => mesh_sparse(&program, spec, &SparseOptions::default())?,
-            Method::Dc => mesh_dc(&program, spec, &DcOptions::default())?,
-        };
+        let meshed = mesh_solid(&model.solid, &options)
+            .map_err(|e| anyhow!("{} at {resolution}: {e}", model.name))?;
         times_s.push(start.elapsed().as_secs_f64());
-        last = Some((mesh, stats, program.len()));
+        last = Some((meshed.mesh, meshed.stats, meshed.program_length));
     }
     let peak_memory_bytes = if measure_memory {
         peak_rss_bytes()
