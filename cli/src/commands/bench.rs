@@ -10,8 +10,13 @@
 //! padding), not the check.
 
 mod case;
+mod case_table;
+#[cfg(test)]
+mod case_tests;
+mod check;
 mod memory;
 mod raw;
+mod raw_table;
 mod table;
 
 use crate::args::{BenchArgs, BenchCaseArgs, Method};
@@ -29,7 +34,7 @@ pub fn run(a: &BenchArgs) -> Result<u8> {
         if a.json {
             outln!("{}", serde_json::to_string_pretty(&json!({ "raw": rows }))?)?;
         } else {
-            out!("{}", raw::table(&rows).render())?;
+            out!("{}", raw_table::table(&rows).render())?;
             if let Some(r) = rows.iter().find(|r| r.model == "many-8456") {
                 let samples = 257f64.powi(3);
                 outln!(
@@ -83,7 +88,7 @@ pub fn run(a: &BenchArgs) -> Result<u8> {
             serde_json::to_string_pretty(&json!({ "cases": cases }))?
         )?;
     } else {
-        out!("{}", case::table(&results).render())?;
+        out!("{}", case_table::table(&results).render())?;
     }
     Ok(if results.iter().all(|r| r.check.passed()) {
         0

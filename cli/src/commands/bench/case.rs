@@ -1,8 +1,8 @@
 //! One benchmark case: a model meshed at one resolution `repeat` times (lowering included), the
 //! peak memory read, then the last mesh checked against what is known of the model.
 
+pub use super::check::Check;
 use super::memory::peak_rss_bytes;
-use super::table::{Table, si};
 use crate::args::Method;
 use anyhow::{Result, anyhow};
 use serde::{Deserialize, Serialize};
@@ -11,37 +11,6 @@ use solidkit_kernel::models::Model;
 use solidkit_meshing::TopologyReport;
 use solidkit_meshing::pipeline::{Domain, MeshOptions, mesh_solid};
 use std::time::Instant;
-
-/// The check of a case's mesh.
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
-pub struct Check {
-    /// No boundary edges.
-    pub closed: bool,
-    /// No non-manifold edges or vertices.
-    pub manifold: bool,
-    /// Connected components.
-    pub shells: usize,
-    /// Genus of the mesh (`None` unless every shell is a closed oriented manifold).
-    pub genus: Option<i64>,
-    /// The model's exact genus, where known.
-    pub expected_genus: Option<i64>,
-    /// Volume of the mesh.
-    pub volume: f64,
-    /// The model's exact volume, where known.
-    pub expected_volume: Option<f64>,
-}
-
-impl Check {
-    /// Relative volume error, where the exact volume is known.
-    pub fn volume_error(&self) -> Option<f64> {
-        self.expected_volume.map(|v| (self.volume - v) / v)
-    }
-
-    /// Closed, manifold, and the genus is right where it is known.
-    pub fn passed(&self) -> bool {
-        self.closed && self.manifold && self.expected_genus.is_none_or(|g| self.genus == Some(g))
-    }
-}
 
 /// Result of one case (also the JSON line a `bench-case` child prints).
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
@@ -178,133 +147,4 @@ pub fn run(
             expected_volume: model.volume,
         },
     })
-}
-
-/// Column titles of the case table.
-pub const COLUMNS: [&str; 15] = [
-    "model",
-    "method",
-    "res",
-    "threads",
-    "median s",
-    "min s",
-    "max s",
-    "triangles",
-    "points/s",
-    "peak MiB",
-    "closed",
-    "manifold",
-    "shells",
-    "genus",
-    "vol err",
-];
-
-fn yes(b: bool) -> String {
-    if b { "yes" } else { "NO" }.to_string()
-}
-
-/// The results as a table, one row per case.
-pub fn table(results: &[CaseResult]) -> Table {
-    let mut t = Table::new(&COLUMNS);
-    for r in results {
-        let c = &r.check;
-        let genus = match (c.genus, c.expected_genus) {
-            (Some(g), Some(want)) if g == want => format!("{g}"),
-            (got, Some(want)) => format!("{} (want {want})", opt(got)),
-            (got, None) => opt(got),
-        };
-        t.rows.push(vec![
-            r.model.clone(),
-            r.method.name().to_string(),
-            r.resolution.to_string(),
-            r.threads.to_string(),
-            format!("{:.3}", r.median_s()),
-            format!("{:.3}", r.min_s()),
-            format!("{:.3}", r.max_s()),
-            r.triangles.to_string(),
-            si(r.points_per_s()),
-            r.peak_memory_bytes
-                .map_or("-".into(), |b| format!("{:.0}", b as f64 / 1048576.0)),
-            yes(c.closed),
-            yes(c.manifold),
-            c.shells.to_string(),
-            genus,
-            c.volume_error()
-                .map_or("-".into(), |e| format!("{:+.3}%", 100.0 * e)),
-        ]);
-    }
-    t
-}
-
-fn opt(g: Option<i64>) -> String {
-    g.map_or("-".into(), |g| g.to_string())
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn a_tiny_case_fills_one_row_of_every_column() {
-        let model = Model::by_name("sphere").expect("model");
-        let r = run(&model, 16, 2, Method::Mc, false).expect("runs");
-        assert_eq!(r.times_s.len(), 2);
-        assert!(r.triangles > 0 && r.samples_evaluated > 0);
-        assert!(r.check.passed(), "{:?}", r.check);
-        assert!(r.check.volume_error().is_some());
-        let text = table(std::slice::from_ref(&r)).render();
-        let lines: Vec<&str> = text.lines().collect();
-        assert_eq!(lines.len(), 2);
-        for (line, first) in lines.iter().zip(["model", "sphere"]) {
-            let cells: Vec<&str> = line.split("  ").filter(|c| !c.trim().is_empty()).collect();
-            assert_eq!(cells.len(), COLUMNS.len(), "{line}");
-            assert_eq!(cells[0].trim(), first);
-        }
-        // The child-process protocol: the JSON line reads back to the same result.
-        let line = serde_json::to_string(&r).expect("json");
-        assert_eq!(serde_json::from_str::<CaseResult>(&line).expect("parse"), r);
-        let v = r.to_json();
-        for key in [
-            "median_s",
-            "points_per_s",
-            "check_passed",
-            "triangles",
-            "check",
-        ] {
-            assert!(v.get(key).is_some(), "{key}");
-        }
-    }
-
-    #[test]
-    fn dual_contouring_cases_run_and_pass_their_check() {
-        let model = Model::by_name("sphere").expect("model");
-        let r = run(&model, 16, 1, Method::Dc, false).expect("runs");
-        assert_eq!(r.method, Method::Dc);
-        assert!(r.check.passed(), "{:?}", r.check);
-        assert!(r.check.volume_error().is_some_and(|e| e.abs() < 0.02));
-        let line = serde_json::to_string(&r).expect("json");
-        assert!(line.contains("\"method\":\"dc\""), "{line}");
-    }
-
-    #[test]
-    fn a_wrong_genus_fails_the_check() {
-        let c = Check {
-            closed: true,
-            manifold: true,
-            shells: 1,
-            genus: Some(4),
-            expected_genus: Some(5),
-            volume: 1.0,
-            expected_volume: None,
-        };
-        assert!(!c.passed());
-        assert!(c.volume_error().is_none());
-    }
-
-    #[test]
-    fn medians() {
-        assert_eq!(median(&[1.0, 2.0, 9.0]), 2.0);
-        assert_eq!(median(&[1.0, 2.0, 4.0, 9.0]), 3.0);
-        assert!(median(&[]).is_nan());
-    }
 }

@@ -5,14 +5,12 @@
 //! second of evaluation inside the leaf bricks, one thread).
 
 use super::case::median;
-use super::table::{Table, si};
 use anyhow::Result;
 use serde::Serialize;
 use solidkit_kernel::models::Model;
 use solidkit_kernel::models::workload::{lattice_points, octree_boxes};
 use solidkit_kernel::program::{BatchScratch, IntervalScratch};
-use solidkit_meshing::marching_cubes::GridSpec;
-use solidkit_meshing::octree::{SparseOptions, mesh_sparse};
+use solidkit_meshing::pipeline::{Domain, MeshOptions, mesh_solid};
 use std::hint::black_box;
 use std::time::Instant;
 
@@ -119,10 +117,11 @@ pub fn run(sizes: &RawSizes, repeat: u32) -> Result<Vec<RawRow>> {
 /// Meshes `many-8456` on one thread and reports the evaluation rate of the pruned brick programs.
 fn pruned_row(resolution: usize) -> Result<RawRow> {
     let model = Model::by_name("many-8456")?;
-    let program = model.solid.compile();
-    let spec = GridSpec::covering(&model.domain, resolution)?;
+    let options = MeshOptions::new(resolution)
+        .domain(Domain::Covering(model.domain))
+        .no_refinement();
     let pool = rayon::ThreadPoolBuilder::new().num_threads(1).build()?;
-    let (_, stats) = pool.install(|| mesh_sparse(&program, spec, &SparseOptions::default()))?;
+    let stats = pool.install(|| mesh_solid(&model.solid, &options))?.stats;
     let mean = stats.leaf_instructions / stats.surface_bricks.max(1) as u64;
     Ok(RawRow {
         kind: "pruned-eval",
@@ -133,31 +132,6 @@ fn pruned_row(resolution: usize) -> Result<RawRow> {
         rate_per_s: stats.samples_evaluated as f64 / stats.evaluation_cpu_s.max(1e-9),
         times_s: vec![stats.evaluation_cpu_s],
     })
-}
-
-/// The raw rates as a table.
-pub fn table(rows: &[RawRow]) -> Table {
-    let mut t = Table::new(&[
-        "measure",
-        "model",
-        "instructions",
-        "count",
-        "median s",
-        "rate",
-    ]);
-    for r in rows {
-        let mut sorted = r.times_s.clone();
-        sorted.sort_by(f64::total_cmp);
-        t.rows.push(vec![
-            r.kind.to_string(),
-            r.model.clone(),
-            r.program_length.to_string(),
-            r.count.to_string(),
-            format!("{:.4}", median(&sorted)),
-            format!("{} {}/s", si(r.rate_per_s), r.unit),
-        ]);
-    }
-    t
 }
 
 #[cfg(test)]
@@ -184,7 +158,7 @@ mod tests {
                 ("pruned-eval", "many-8456")
             ]
         );
-        let text = table(&rows).render();
+        let text = super::super::raw_table::table(&rows).render();
         assert_eq!(text.lines().count(), 1 + rows.len());
         assert!(text.lines().skip(1).all(|l| l.ends_with("/s")));
     }

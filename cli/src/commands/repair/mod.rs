@@ -1,15 +1,16 @@
 //! `solidkit repair`: read a mesh, repair it (minimal, rebuild or auto), write it atomically and
 //! print the reports before and after with the changes per kind.
 
+mod report;
+
 use crate::args::{MAX_RESOLUTION, RepairArgs, RepairMode};
 use crate::output::{out, outln};
 use anyhow::{Result, anyhow};
 use glam::DVec3;
-use serde_json::{Value, json};
+use report::{changes_text, mode_name, rebuild_json};
+use serde_json::json;
 use solidkit_meshing::io::{read_mesh, write_mesh};
-use solidkit_meshing::repair::{
-    MinimalOptions, RebuildOptions, Rebuilt, RepairCounts, rebuild, repair_minimal,
-};
+use solidkit_meshing::repair::{MinimalOptions, RebuildOptions, rebuild, repair_minimal};
 use solidkit_meshing::{IndexedMesh, TopologyReport};
 
 /// Default rebuild resolution (cells along the longest side).
@@ -110,44 +111,6 @@ fn grid(a: &RepairArgs, input: &IndexedMesh) -> (usize, Option<f64>) {
         }
         None => (a.resolution.unwrap_or(DEFAULT_RESOLUTION), None),
     }
-}
-
-fn mode_name(m: RepairMode) -> &'static str {
-    match m {
-        RepairMode::Minimal => "minimal",
-        RepairMode::Rebuild => "rebuild",
-        RepairMode::Auto => "auto",
-    }
-}
-
-fn rebuild_json(r: &Rebuilt, diagonal: f64) -> Value {
-    json!({
-        "cells": r.cells,
-        "cell": r.cell,
-        "hausdorff": r.hausdorff.symmetric,
-        "hausdorff_input_to_result": r.hausdorff.a_to_b.max,
-        "hausdorff_result_to_input": r.hausdorff.b_to_a.max,
-        "relative": r.hausdorff.symmetric / diagonal.max(f64::MIN_POSITIVE),
-    })
-}
-
-/// The non-zero change counts, one per line.
-fn changes_text(c: &RepairCounts, weld: f64) -> String {
-    let mut s = format!("== minimal repair (weld {weld}):\n");
-    let v = serde_json::to_value(c).unwrap_or(Value::Null);
-    let mut any = false;
-    if let Value::Object(map) = v {
-        for (k, x) in map {
-            if x.as_f64().is_some_and(|n| n != 0.0) {
-                s.push_str(&format!("  {k}: {x}\n"));
-                any = true;
-            }
-        }
-    }
-    if !any {
-        s.push_str("  nothing to change\n");
-    }
-    s
 }
 
 fn bbox(mesh: &IndexedMesh) -> [DVec3; 2] {

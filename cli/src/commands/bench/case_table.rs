@@ -1,0 +1,64 @@
+//! The benchmark cases as a text table, one row per case.
+
+use super::case::CaseResult;
+use super::table::{Table, si};
+
+/// Column titles of the case table.
+pub const COLUMNS: [&str; 15] = [
+    "model",
+    "method",
+    "res",
+    "threads",
+    "median s",
+    "min s",
+    "max s",
+    "triangles",
+    "points/s",
+    "peak MiB",
+    "closed",
+    "manifold",
+    "shells",
+    "genus",
+    "vol err",
+];
+
+fn yes(b: bool) -> String {
+    if b { "yes" } else { "NO" }.to_string()
+}
+
+/// The results as a table, one row per case.
+pub fn table(results: &[CaseResult]) -> Table {
+    let mut t = Table::new(&COLUMNS);
+    for r in results {
+        let c = &r.check;
+        let genus = match (c.genus, c.expected_genus) {
+            (Some(g), Some(want)) if g == want => format!("{g}"),
+            (got, Some(want)) => format!("{} (want {want})", opt(got)),
+            (got, None) => opt(got),
+        };
+        t.rows.push(vec![
+            r.model.clone(),
+            r.method.name().to_string(),
+            r.resolution.to_string(),
+            r.threads.to_string(),
+            format!("{:.3}", r.median_s()),
+            format!("{:.3}", r.min_s()),
+            format!("{:.3}", r.max_s()),
+            r.triangles.to_string(),
+            si(r.points_per_s()),
+            r.peak_memory_bytes
+                .map_or("-".into(), |b| format!("{:.0}", b as f64 / 1048576.0)),
+            yes(c.closed),
+            yes(c.manifold),
+            c.shells.to_string(),
+            genus,
+            c.volume_error()
+                .map_or("-".into(), |e| format!("{:+.3}%", 100.0 * e)),
+        ]);
+    }
+    t
+}
+
+fn opt(g: Option<i64>) -> String {
+    g.map_or("-".into(), |g| g.to_string())
+}
