@@ -12,8 +12,6 @@ mod subdivide;
 
 use crate::args::Command;
 use anyhow::Result;
-pub use r#gen::GenArgs;
-pub use render::{RenderArgs, parse_size, parse_view};
 
 /// Runs a subcommand; returns the process exit code.
 pub fn run(command: Command) -> Result<u8> {

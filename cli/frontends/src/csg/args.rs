@@ -1,19 +1,9 @@
 //! Typed access to a statement's arguments: named or positional, `undef` read as absent.
 
 use super::error::CsgError;
+use super::facets::{MAX_FRAGMENTS, Resolution};
 use super::parser::{Stmt, Value};
 use glam::{DVec2, DVec3};
-
-/// OpenSCAD's resolution settings `$fn`, `$fa`, `$fs`.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct Resolution {
-    /// `$fn`: a fixed number of fragments when positive.
-    pub fn_: f64,
-    /// `$fa`: the largest angle of a fragment, degrees.
-    pub fa: f64,
-    /// `$fs`: the largest length of a fragment.
-    pub fs: f64,
-}
 
 impl Stmt {
     /// The argument `name`, or the `position`-th positional one; `undef` is `None`.
@@ -67,10 +57,10 @@ impl Stmt {
     /// `$fn`, `$fa`, `$fs` with OpenSCAD's defaults 0, 12, 2.
     pub fn resolution(&self) -> Result<Resolution, CsgError> {
         let fn_ = self.num("$fn", None, 0.0)?;
-        if fn_ > super::facets::MAX_FRAGMENTS as f64 {
+        if fn_ > MAX_FRAGMENTS as f64 {
             return Err(self.error(format!(
                 "'$fn' = {fn_}: more than {} fragments",
-                super::facets::MAX_FRAGMENTS
+                MAX_FRAGMENTS
             )));
         }
         Ok(Resolution {

@@ -8,8 +8,8 @@
 //! closes it). Points are
 //! `(p − origin) · scale`. Other entities are skipped and counted, so the caller can warn.
 
-use super::args::Resolution;
 use super::facets;
+use super::facets::Resolution;
 use glam::DVec2;
 use std::collections::HashMap;
 

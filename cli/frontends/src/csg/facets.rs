@@ -1,11 +1,21 @@
 //! OpenSCAD's faceting of round primitives (as in its `primitives.cc`, 2021.01): the fragment
 //! rule, circles as regular n-gons, spheres as stacked rings, cylinders and cones as two n-gons.
 
-use super::args::Resolution;
 use glam::{DVec2, DVec3};
 
 /// OpenSCAD's `GRID_FINE`: radii below it get 3 fragments.
 const GRID_FINE: f64 = 0.000_000_953_674_316_406_25;
+
+/// OpenSCAD's resolution settings `$fn`, `$fa`, `$fs`.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Resolution {
+    /// `$fn`: a fixed number of fragments when positive.
+    pub fn_: f64,
+    /// `$fa`: the largest angle of a fragment, degrees.
+    pub fa: f64,
+    /// `$fs`: the largest length of a fragment.
+    pub fs: f64,
+}
 
 /// The most fragments a round primitive gets: a bound on memory for hostile input (a sphere of
 /// `n` fragments has about `n²/2` vertices). `$fn` above it is an error (see

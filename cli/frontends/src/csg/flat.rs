@@ -3,8 +3,8 @@
 //! (each slice is a bijective image of the profile), so `extrude(A − B) = extrude(A) − extrude(B)`:
 //! every leaf becomes one kernel profile and the Booleans are replayed in 3D.
 
-use super::args::Resolution;
 use super::facets;
+use super::facets::Resolution;
 use glam::DVec2;
 use solidkit_kernel::profile::{Circle, Profile, ProfileError};
 

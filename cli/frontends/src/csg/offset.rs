@@ -11,8 +11,8 @@
 //! Shrinking or mitring a non-convex region, or offsetting a 2D difference or intersection, needs
 //! polygon clipping this importer does not have: those are errors that say so.
 
-use super::args::Resolution;
 use super::facets;
+use super::facets::Resolution;
 use super::flat::{Flat, Leaf2, Op2};
 use glam::DVec2;
 

@@ -331,7 +331,7 @@ fn deep_nesting_does_not_overflow() {
 
 #[test]
 fn openscad_facets_counts() {
-    use super::args::Resolution;
+    use super::facets::Resolution;
     use super::facets::{fragments, sphere};
     let d = Resolution {
         fn_: 0.0,
@@ -453,7 +453,7 @@ fn regressions_do_not_panic() {
 
 #[test]
 fn huge_fn_is_an_error_and_fa_fs_are_clamped() {
-    use super::args::Resolution;
+    use super::facets::Resolution;
     use super::facets::{MAX_FRAGMENTS, fragments};
     let e = import("sphere(r = 1, $fn = 1e12);", Facets::OpenScad).unwrap_err();
     assert!(e.to_string().contains("$fn"), "{e}");

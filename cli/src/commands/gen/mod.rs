@@ -5,10 +5,9 @@
 //! a stated truth, a volume is outside its stated tolerance, or a broken mesh reports other
 //! defects than the ones put in).
 
-mod args;
 mod selfcheck;
 
-pub use args::GenArgs;
+use crate::args::GenArgs;
 
 use crate::output::{out, outln};
 use anyhow::{Context, Result};

@@ -1,9 +1,7 @@
 //! `solidkit render`: a PNG of a solid (ray cast from its field), of a mesh (z-buffer) or of a
 //! cross-section of a solid.
 
-mod args;
-
-pub use args::{RenderArgs, parse_size, parse_view};
+use crate::args::RenderArgs;
 
 use crate::input;
 use crate::output::outln;

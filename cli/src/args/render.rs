@@ -1,7 +1,7 @@
 //! Arguments of `solidkit render` and the image options `check --render` and `mesh --preview`
 //! share.
 
-use crate::args::FacetsArg;
+use super::FacetsArg;
 use solidkit_meshing::render::section::Section;
 use solidkit_meshing::render::{ImageSize, View};
 use std::path::PathBuf;

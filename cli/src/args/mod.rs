@@ -1,5 +1,11 @@
 //! Command-line arguments (clap), the contract users and later front ends rely on.
 
+mod r#gen;
+mod render;
+
+pub use r#gen::GenArgs;
+pub use render::{RenderArgs, parse_size, parse_view};
+
 use clap::{Parser, Subcommand, ValueEnum};
 use std::path::PathBuf;
 
@@ -27,7 +33,7 @@ pub enum Command {
     Convert(ConvertArgs),
     /// Write a suite of test solids with exact ground truth (one mesh per solid and
     /// manifest.json); exit 1 if a solid fails its own check.
-    Gen(crate::commands::GenArgs),
+    Gen(GenArgs),
     /// Compare two meshes: key measures of each and their symmetric Hausdorff distance.
     Compare(CompareArgs),
     /// Benchmark meshing of the standard models and print a table (time, rate, peak memory and
@@ -41,7 +47,7 @@ pub enum Command {
     Subdivide(SubdivideArgs),
     /// Render a PNG: a solid ray cast from its field, a mesh file rasterised, or a
     /// cross-section (--section z=C) of a solid.
-    Render(crate::commands::RenderArgs),
+    Render(RenderArgs),
     /// Repair a mesh into a closed oriented manifold without self-intersections (weld, clean,
     /// orient, fill holes, split non-manifold vertices; or remesh its winding-number solid),
     /// write it and print the reports before and after; exit 1 if the result is still not one.
@@ -262,10 +268,10 @@ pub struct CheckArgs {
     #[arg(long, value_name = "PNG")]
     pub render: Option<PathBuf>,
     /// Size WxH of the --render image.
-    #[arg(long, default_value = "1024x1024", value_parser = crate::commands::parse_size)]
+    #[arg(long, default_value = "1024x1024", value_parser = parse_size)]
     pub size: solidkit_meshing::render::ImageSize,
     /// View of the --render image: iso, front, top, side or AZ,EL in degrees.
-    #[arg(long, default_value = "iso", value_parser = crate::commands::parse_view, allow_hyphen_values = true)]
+    #[arg(long, default_value = "iso", value_parser = parse_view, allow_hyphen_values = true)]
     pub view: solidkit_meshing::render::View,
 }
 
