@@ -38,7 +38,8 @@ pub use gyroid::{Gyroid, cos_f32, cos_interval, sin_f32, sin_interval, sincos_f3
 pub use heightfield::HeightField;
 pub use plane::HalfSpace;
 pub use polyhedron::{
-    MeshResolver, MeshSolid, MeshSolidError, MeshSource, NoMeshResolver, Platonic,
+    MeshResolver, MeshSolid, MeshSolidError, MeshSource, NoMeshResolver, Platonic, ResolveError,
+    ResolveKind,
 };
 pub use polyhedron::{SubdivisionInput, SubdivisionRequest, SubdivisionScheme};
 pub use quadric::{Ellipsoid, Quadric};

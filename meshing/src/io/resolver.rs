@@ -17,7 +17,7 @@ use std::path::{Path, PathBuf};
 use solidkit_kernel::IndexedMesh;
 use solidkit_kernel::files::{FileAccess, FileError};
 use solidkit_kernel::json::MeshResolver;
-use solidkit_kernel::primitive::{SubdivisionInput, SubdivisionRequest};
+use solidkit_kernel::primitive::{ResolveError, ResolveKind, SubdivisionInput, SubdivisionRequest};
 
 use super::{MeshFormat, MeshIoError, PolygonMesh};
 use crate::HalfEdgeMesh;
@@ -64,35 +64,51 @@ impl FileMeshResolver {
 }
 
 impl MeshResolver for FileMeshResolver {
-    fn load(&self, path: &str) -> Result<IndexedMesh, String> {
-        let (format, bytes) = self.mesh_bytes(path).map_err(|e| e.to_string())?;
-        super::read_mesh_bytes(&bytes, format, path).map_err(|e| e.to_string())
+    fn load(&self, path: &str) -> Result<IndexedMesh, ResolveError> {
+        let (format, bytes) = self.mesh_bytes(path).map_err(file_error)?;
+        super::read_mesh_bytes(&bytes, format, path)
+            .map_err(|e| ResolveError::new(ResolveKind::Format, e))
     }
 
-    fn read_file(&self, path: &str) -> Result<Vec<u8>, String> {
+    fn read_file(&self, path: &str) -> Result<Vec<u8>, ResolveError> {
         self.access
             .read(path)
             .map(|(_, bytes)| bytes)
-            .map_err(|e| e.to_string())
+            .map_err(|e| ResolveError::new(ResolveKind::File, e))
     }
 
-    fn subdivide(&self, request: &SubdivisionRequest<'_>) -> Result<IndexedMesh, String> {
+    fn subdivide(&self, request: &SubdivisionRequest<'_>) -> Result<IndexedMesh, ResolveError> {
         let mesh = match request.input {
             SubdivisionInput::Faces { vertices, faces } => {
                 HalfEdgeMesh::from_polygons(vertices.to_vec(), faces)
             }
             SubdivisionInput::File { path } => {
-                let (format, bytes) = self.mesh_bytes(path).map_err(|e| e.to_string())?;
+                let (format, bytes) = self.mesh_bytes(path).map_err(file_error)?;
                 super::read_polygon_mesh_bytes(&bytes, format, path)
-                    .map_err(|e| e.to_string())?
+                    .map_err(|e| ResolveError::new(ResolveKind::Format, e))?
                     .to_half_edge()
             }
         }
-        .map_err(|e| format!("cannot subdivide the child: {e}"))?;
+        .map_err(|e| {
+            ResolveError::message(
+                ResolveKind::Subdivision,
+                format!("cannot subdivide the child: {e}"),
+            )
+        })?;
         let result = subdivide(&mesh, request.scheme, request.levels, &Limits::default())
-            .map_err(|e| e.to_string())?;
+            .map_err(|e| ResolveError::new(ResolveKind::Subdivision, e))?;
         Ok(PolygonMesh::from_half_edge(&result).triangulated())
     }
+}
+
+/// A mesh file that could not be read (`ResolveKind::File`) or whose extension names no format
+/// (`ResolveKind::Format`), with the reader's error inside.
+fn file_error(e: MeshIoError) -> ResolveError {
+    let kind = match e {
+        MeshIoError::Io { .. } | MeshIoError::File(_) => ResolveKind::File,
+        _ => ResolveKind::Format,
+    };
+    ResolveError::new(kind, e)
 }
 
 #[cfg(test)]

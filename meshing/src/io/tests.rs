@@ -821,3 +821,26 @@ fn parallel_binary_stl_matches_the_serial_reader() {
     assert_eq!(parallel, serial);
     assert!(parallel.positions.len() < 3 * parallel.triangles.len() / 2);
 }
+
+/// The resolver's failures are typed across the crate boundary: the kind says which request
+/// failed and how, and the reader's own error is reachable for downcasting.
+#[test]
+fn resolver_errors_carry_kind_and_reader_error() {
+    use solidkit_kernel::json::MeshResolver;
+    use solidkit_kernel::primitive::ResolveKind;
+    let dir = tempfile::tempdir().expect("temp dir");
+    std::fs::write(dir.path().join("bad.off"), "OFF\n3 1 0\n0 0 0\n").expect("write");
+    let resolver = super::FileMeshResolver::new(dir.path());
+
+    let missing = resolver.load("missing.stl").expect_err("no such file");
+    assert_eq!(missing.kind(), ResolveKind::File);
+    assert!(missing.inner().downcast_ref::<MeshIoError>().is_some());
+
+    let escape = resolver.read_file("../outside.png").expect_err("confined");
+    assert_eq!(escape.kind(), ResolveKind::File);
+
+    let bad = resolver.load("bad.off").expect_err("truncated OFF");
+    assert_eq!(bad.kind(), ResolveKind::Format);
+    let inner = bad.inner().downcast_ref::<MeshIoError>().expect("reader error");
+    assert_eq!(inner.to_string(), bad.to_string());
+}

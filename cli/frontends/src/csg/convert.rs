@@ -429,7 +429,10 @@ fn node(
                 .filter(|p| !p.is_empty())
                 .ok_or_else(|| stmt.error("'file': expected a file name"))?;
             surface::check_path(stmt, path)?;
-            let bytes = ctx.files.read_file(path).map_err(|e| stmt.error(e))?;
+            let bytes = ctx
+                .files
+                .read_file(path)
+                .map_err(|e| stmt.error(e.to_string()))?;
             match surface(stmt, path, &bytes)? {
                 Some((v, f)) => leaf(Geom::Solid(polyhedron(stmt, v, f)?)),
                 None => {

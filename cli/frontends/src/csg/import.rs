@@ -49,7 +49,9 @@ pub fn import(
             Ok(Imported::Solid(Solid::primitive(Primitive::Mesh(mesh))))
         }
         "dxf" => {
-            let bytes = files.read_file(path).map_err(|e| stmt.error(e))?;
+            let bytes = files
+                .read_file(path)
+                .map_err(|e| stmt.error(e.to_string()))?;
             let text = String::from_utf8_lossy(&bytes);
             let origin = stmt.size2("origin", None, 0.0)?;
             let scale = stmt.num("scale", None, 1.0)?;

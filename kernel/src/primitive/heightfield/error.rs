@@ -54,7 +54,7 @@ pub enum HeightFieldError {
         /// The path as written.
         path: String,
         /// Why not.
-        reason: String,
+        reason: crate::primitive::ResolveError,
     },
     /// The image declares more pixels than a height map may have.
     #[error(

@@ -3,6 +3,7 @@
 
 use super::{MeshResolver, MeshSolid, MeshSource};
 use crate::polyhedra::{PlatonicKind, PlatonicSize, Polyhedron, Prism};
+use crate::primitive::{ResolveError, ResolveKind};
 use crate::{IndexedMesh, KernelError, NodeKind, Primitive, Solid, json};
 use glam::{DVec2, DVec3};
 
@@ -10,13 +11,16 @@ use glam::{DVec2, DVec3};
 struct CubeResolver;
 
 impl MeshResolver for CubeResolver {
-    fn load(&self, path: &str) -> Result<IndexedMesh, String> {
+    fn load(&self, path: &str) -> Result<IndexedMesh, ResolveError> {
         if path == "cube.obj" {
             let cube = Polyhedron::platonic(PlatonicKind::Cube, PlatonicSize::Edge(1.0))
-                .map_err(|e| e.to_string())?;
+                .map_err(|e| ResolveError::new(ResolveKind::Format, e))?;
             Ok(cube.to_indexed())
         } else {
-            Err(format!("no such file: {path}"))
+            Err(ResolveError::message(
+                ResolveKind::File,
+                format!("no such file: {path}"),
+            ))
         }
     }
 }

@@ -21,6 +21,7 @@
 
 use super::super::{PrimitiveError, Shape, lipschitz_interval};
 use super::request::SubdivisionScheme;
+use super::resolve_error::ResolveError;
 use super::resolver::MeshResolver;
 use super::tree::MeshTree;
 use crate::polyhedra::{Polyhedron, PolyhedronError, Prism};
@@ -37,12 +38,12 @@ pub enum MeshSolidError {
     #[error(transparent)]
     Invalid(#[from] PolyhedronError),
     /// A mesh file could not be loaded.
-    #[error("cannot load \"{path}\": {message}")]
+    #[error("cannot load \"{path}\": {error}")]
     Load {
         /// The path as given.
         path: String,
         /// Why.
-        message: String,
+        error: ResolveError,
     },
     /// The child of a `subdivide` node is not a polyhedral primitive.
     #[error(
@@ -55,7 +56,7 @@ pub enum MeshSolidError {
     /// The subdivision failed (non-manifold child, a non-triangle child for Loop or butterfly,
     /// too many faces, no subdivision hook...).
     #[error("{0}")]
-    Subdivision(String),
+    Subdivision(ResolveError),
 }
 
 /// Where a mesh solid's triangles come from.
@@ -147,12 +148,10 @@ impl MeshSolid {
 
     /// A mesh solid from a mesh file loaded by `resolver`; the path is kept for the JSON writer.
     pub fn from_file(path: &str, resolver: &dyn MeshResolver) -> Result<Self, MeshSolidError> {
-        let mesh = resolver
-            .load(path)
-            .map_err(|message| MeshSolidError::Load {
-                path: path.to_string(),
-                message,
-            })?;
+        let mesh = resolver.load(path).map_err(|error| MeshSolidError::Load {
+            path: path.to_string(),
+            error,
+        })?;
         Self::with_source(
             MeshSource::File {
                 path: path.to_string(),

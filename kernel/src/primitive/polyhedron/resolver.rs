@@ -8,34 +8,35 @@
 //! subdivides on its half-edge mesh.
 
 use super::request::SubdivisionRequest;
+use super::resolve_error::{ResolveError, ResolveKind};
 use crate::IndexedMesh;
 
 /// Loads the mesh named by a `mesh` node's `path` and the height map of a `heightfield` node's
 /// `png`, and subdivides `subdivide` nodes.
 pub trait MeshResolver {
-    /// The triangle mesh at `path` (as written in the tree), or a one-line reason why not.
-    fn load(&self, path: &str) -> Result<IndexedMesh, String>;
+    /// The triangle mesh at `path` (as written in the tree), or why not.
+    fn load(&self, path: &str) -> Result<IndexedMesh, ResolveError>;
 
     /// The bytes of the file at `path` (as written in the tree: a PNG height map), or a one-line
     /// reason why not. The default reads no files and says so.
-    fn read_file(&self, path: &str) -> Result<Vec<u8>, String> {
+    fn read_file(&self, path: &str) -> Result<Vec<u8>, ResolveError> {
         let _ = path;
-        Err(
+        Err(ResolveError::message(
+            ResolveKind::Unsupported,
             "files named in a tree need a resolver (read the tree with json::from_str_with and \
-             solidkit_meshing::io::FileMeshResolver)"
-                .into(),
-        )
+             solidkit_meshing::io::FileMeshResolver)",
+        ))
     }
 
     /// The polygon mesh of `request` subdivided, as triangles counter-clockwise from outside, or
     /// a one-line reason why not. The default has no subdivision and says so.
-    fn subdivide(&self, request: &SubdivisionRequest<'_>) -> Result<IndexedMesh, String> {
+    fn subdivide(&self, request: &SubdivisionRequest<'_>) -> Result<IndexedMesh, ResolveError> {
         let _ = request;
-        Err(
+        Err(ResolveError::message(
+            ResolveKind::Unsupported,
             "subdivision needs a resolver that runs it (read the tree with json::from_str_with and \
-             solidkit_meshing::io::FileMeshResolver)"
-                .into(),
-        )
+             solidkit_meshing::io::FileMeshResolver)",
+        ))
     }
 }
 
@@ -45,7 +46,10 @@ pub trait MeshResolver {
 pub struct NoMeshResolver;
 
 impl MeshResolver for NoMeshResolver {
-    fn load(&self, _path: &str) -> Result<IndexedMesh, String> {
-        Err("mesh files need a resolver (read the tree with json::from_str_with)".into())
+    fn load(&self, _path: &str) -> Result<IndexedMesh, ResolveError> {
+        Err(ResolveError::message(
+            ResolveKind::Unsupported,
+            "mesh files need a resolver (read the tree with json::from_str_with)",
+        ))
     }
 }

@@ -3,6 +3,7 @@
 
 use super::{MeshResolver, SubdivisionInput, SubdivisionRequest, SubdivisionScheme};
 use crate::polyhedra::{PlatonicKind, PlatonicSize, Polyhedron, Prism};
+use crate::primitive::{ResolveError, ResolveKind};
 use crate::{IndexedMesh, KernelError, Solid, json};
 use glam::{DVec2, DVec3};
 
@@ -11,22 +12,33 @@ use glam::{DVec2, DVec3};
 struct Shrink;
 
 impl MeshResolver for Shrink {
-    fn load(&self, path: &str) -> Result<IndexedMesh, String> {
+    fn load(&self, path: &str) -> Result<IndexedMesh, ResolveError> {
         match path {
             "cube.obj" => Ok(cube().to_indexed()),
-            _ => Err(format!("no such file: {path}")),
+            _ => Err(ResolveError::message(
+                ResolveKind::File,
+                format!("no such file: {path}"),
+            )),
         }
     }
 
-    fn subdivide(&self, request: &SubdivisionRequest<'_>) -> Result<IndexedMesh, String> {
+    fn subdivide(&self, request: &SubdivisionRequest<'_>) -> Result<IndexedMesh, ResolveError> {
         let cube = cube();
         let (vertices, faces) = match request.input {
             SubdivisionInput::Faces { vertices, faces } => (vertices, faces),
             SubdivisionInput::File { path: "cube.obj" } => (cube.vertices(), cube.faces()),
-            SubdivisionInput::File { path } => return Err(format!("no such file: {path}")),
+            SubdivisionInput::File { path } => {
+                return Err(ResolveError::message(
+                    ResolveKind::File,
+                    format!("no such file: {path}"),
+                ));
+            }
         };
         if request.scheme.needs_triangles() && faces.iter().any(|f| f.len() != 3) {
-            return Err(format!("{} needs triangles", request.scheme));
+            return Err(ResolveError::message(
+                ResolveKind::Subdivision,
+                format!("{} needs triangles", request.scheme),
+            ));
         }
         let scale = 0.5f64.powi(request.levels as i32);
         let mut triangles = Vec::new();
