@@ -1,4 +1,8 @@
 //! The [`Field`] trait: what a polygonizer needs from a solid (values at points, in bulk).
+//!
+//! The small, closure-friendly trait of the dense reference path. The meshers' full trait is
+//! [`crate::Evaluator`]; [`crate::eval::AsField`] makes any evaluator a `Field` (see
+//! [`crate::eval`] for how the traits relate).
 
 use glam::DVec3;
 

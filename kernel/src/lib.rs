@@ -20,6 +20,7 @@
 //!    a box (`interval_with`) after which `prune` returns a shorter program valid in that box.
 //!    The field is negative inside and a distance bound everywhere; exact zeros are settled
 //!    symbolically (`program::perturb`) so coincident faces never invent surfaces.
+//!    All of this is the [`Evaluator`] trait ([`eval`]), which the meshers are generic over.
 //! 4. **Mesh** it: the `solidkit-meshing` crate polygonizes a program on a grid (its `pipeline`
 //!    module is the one path), and [`tessellate`] and [`patch`] give exact triangulations of
 //!    surfaces where one exists.
@@ -51,6 +52,7 @@ pub mod bvh;
 pub mod closest;
 pub mod curve;
 mod error;
+pub mod eval;
 mod field;
 pub mod files;
 mod interval;
@@ -71,6 +73,7 @@ pub mod triangulate;
 
 pub use aabb::Aabb;
 pub use error::KernelError;
+pub use eval::Evaluator;
 pub use field::Field;
 pub use interval::Interval;
 pub use mesh::IndexedMesh;

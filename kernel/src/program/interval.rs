@@ -7,6 +7,7 @@
 //! rounding (see [`margin`]), and boxes are only classified inside/outside with the same margin.
 
 use super::{Instr, Program};
+use crate::eval::{Pruned, box_scale};
 use crate::primitive::Shape;
 use crate::{Aabb, Interval};
 
@@ -33,18 +34,6 @@ pub struct IntervalScratch {
     map: Vec<u32>,
 }
 
-/// The outcome of pruning a program over a box.
-#[derive(Debug, Clone)]
-pub enum Pruned {
-    /// The whole box is inside the solid.
-    Inside,
-    /// The whole box is outside the solid.
-    Outside,
-    /// The surface may cross the box; the shorter program valid in it, or `None` when no branch
-    /// could be cut (the original program applies).
-    Surface(Option<Program>),
-}
-
 /// Safety margin for comparisons between f64 intervals whose values will be evaluated in f32:
 /// a few hundred single-precision ulps of the magnitudes involved.
 pub fn margin(scale: f64, a: f64, b: f64) -> f64 {
@@ -59,7 +48,7 @@ impl Program {
         // Every slot is written before it is read; choices are reset only where they are set.
         s.slots.resize(n, Interval::point(0.0));
         s.choices.resize(n, Choice::Both);
-        s.scale = 1.0 + b.min.abs().max(b.max.abs()).max_element().min(1e30);
+        s.scale = box_scale(b);
         s.prunable = false;
         for (i, ins) in self.instrs.iter().enumerate() {
             let v = match *ins {
@@ -173,17 +162,11 @@ impl Program {
         ))
     }
 
-    /// Classifies the box (with the f32 safety margin) and prunes the program for it.
-    pub fn prune_for_box(&self, b: &Aabb, s: &mut IntervalScratch) -> Pruned {
+    /// Classifies the box (with the f32 safety margin, [`Pruned::classify`]) and prunes the
+    /// program for it.
+    pub fn prune_for_box(&self, b: &Aabb, s: &mut IntervalScratch) -> Pruned<Program> {
         let iv = self.interval_with(b, s);
-        let m = margin(s.scale, iv.lo, iv.hi);
-        if iv.hi < -m {
-            Pruned::Inside
-        } else if iv.lo > m {
-            Pruned::Outside
-        } else {
-            Pruned::Surface(self.prune(s))
-        }
+        Pruned::classify(b, iv, || self.prune(s))
     }
 }
 

@@ -21,10 +21,11 @@ pub mod perturb;
 mod regalloc;
 pub mod scalar;
 
+pub use crate::eval::Pruned;
 pub use batch::{BatchScratch, CHUNK};
 pub use frame::Frame;
 pub use gradients::GradientScratch;
-pub use interval::{Choice, IntervalScratch, Pruned};
+pub use interval::{Choice, IntervalScratch};
 
 use crate::primitive::Primitive;
 use std::sync::Arc;
