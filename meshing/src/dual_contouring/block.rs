@@ -8,13 +8,14 @@
 //! both see the same crossings.
 
 use super::certify::{SEPARATOR_MARGIN, VERTEX_MARGIN};
-use super::crossing::{CrossingScratch, DcField, EdgeQuery, refine};
+use super::crossing::{CrossingScratch, EdgeQuery, refine};
 use super::patches::{Config, NO_PATCH, Separator, face_edges, patch_table, reachable};
 use super::qef::Qef;
 use crate::grid::GridSpec;
 use crate::marching_cubes::inside;
 use crate::marching_cubes::table::{cell_config, edge_origin};
 use glam::DVec3;
+use solidkit_kernel::Evaluator;
 
 /// Marks a cell without surface in [`Block::first`].
 pub(crate) const NO_VERTEX: u32 = u32::MAX;
@@ -70,8 +71,6 @@ pub(crate) struct Block {
     pub samples: u64,
     /// Seconds of field evaluation.
     pub evaluation_s: f64,
-    /// The program valid in the block (sparse path).
-    pub program: Option<std::sync::Arc<solidkit_kernel::Program>>,
     /// Thin and hidden features in the block (sparse path only).
     pub thin: crate::octree::ThinCounts,
 }
@@ -96,7 +95,7 @@ pub(crate) struct BlockScratch<S> {
 
 /// Builds a block from its samples (`extent + 1` per axis, x fastest).
 #[allow(clippy::too_many_arguments)]
-pub(crate) fn build<F: DcField>(
+pub(crate) fn build<F: Evaluator>(
     field: &F,
     spec: &GridSpec,
     min: [usize; 3],
@@ -104,7 +103,7 @@ pub(crate) fn build<F: DcField>(
     block_size: usize,
     values: &[f32],
     keep: bool,
-    s: &mut BlockScratch<F::Scratch>,
+    s: &mut BlockScratch<F::GradientScratch>,
 ) -> Block {
     let e = extent;
     let n = [e[0] + 1, e[1] + 1, e[2] + 1];

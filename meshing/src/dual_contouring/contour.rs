@@ -6,12 +6,12 @@
 use super::block::{Block, OwnedEdge};
 use super::cells::{BlockIndex, CellRef, Cells, FaceKey};
 use super::certify::{EPS, EdgeFrame, FaceKind, RingFace, certify};
-use super::crossing::DcField;
 use super::faces::{DualFace, face_vertex};
 use super::patches::{NO_PATCH, edge_number, face_segment, patch_table};
 use crate::grid::GridSpec;
 use glam::DVec3;
 use rayon::prelude::*;
+use solidkit_kernel::Evaluator;
 
 /// One block's quads, and its polygons through split faces (with their crossing points).
 type BlockPolygons = (Vec<Quad>, Vec<(Vec<Corner>, DVec3)>);
@@ -32,37 +32,33 @@ pub(crate) struct Quad {
     pub other_diagonal: bool,
 }
 
-/// Field values for choosing quad diagonals: `block` is the block of a cell containing `p`, whose
-/// program is valid there.
+/// Field values for choosing quad diagonals: `block` is the index of the block of a cell
+/// containing `p`, whose evaluator is valid there.
 pub(crate) trait Probe: Sync {
     /// Buffers of one worker.
     type Scratch: Default + Send;
     /// The field at `p`.
-    fn value(&self, block: &Block, p: DVec3, s: &mut Self::Scratch) -> f64;
+    fn value(&self, block: usize, p: DVec3, s: &mut Self::Scratch) -> f64;
 }
 
-/// Probes with each block's own (pruned) program.
-pub(crate) struct ProgramProbe;
+/// Probes with each block's own (pruned) evaluator: `self.0[b]` is block `b`'s.
+pub(crate) struct ProgramProbe<'a, E>(pub &'a [std::sync::Arc<E>]);
 
-impl Probe for ProgramProbe {
-    type Scratch = Vec<f64>;
+impl<E: Evaluator> Probe for ProgramProbe<'_, E> {
+    type Scratch = E::PointScratch;
 
-    fn value(&self, block: &Block, p: DVec3, s: &mut Vec<f64>) -> f64 {
-        block
-            .program
-            .as_ref()
-            .expect("sparse blocks keep their program")
-            .value_with(p, s)
+    fn value(&self, block: usize, p: DVec3, s: &mut E::PointScratch) -> f64 {
+        self.0[block].value_with(p, s)
     }
 }
 
 /// Probes one field everywhere.
 pub(crate) struct FieldProbe<'a, F>(pub &'a F);
 
-impl<F: DcField> Probe for FieldProbe<'_, F> {
-    type Scratch = F::Scratch;
+impl<F: Evaluator> Probe for FieldProbe<'_, F> {
+    type Scratch = F::GradientScratch;
 
-    fn value(&self, _: &Block, p: DVec3, s: &mut F::Scratch) -> f64 {
+    fn value(&self, _: usize, p: DVec3, s: &mut F::GradientScratch) -> f64 {
         let (mut v, mut g) = ([0.0], [DVec3::ZERO]);
         self.0.values_gradients(&[p], &mut v, &mut g, s);
         v[0]
@@ -327,7 +323,7 @@ fn polygon<P: Probe>(
             c[v] = c[v].clamp(g[v] as f64 - 1.0, g[v] as f64);
             let c = c.map(|x| x as usize);
             let r = cells.get(c).expect("the four cells are surface cells");
-            probe.value(&cells.blocks[r.block], m, scratch).abs()
+            probe.value(r.block, m, scratch).abs()
         };
         let (f0, f1) = (value(m0), value(m1));
         let flips = |t: [[usize; 3]; 2]| {

@@ -4,43 +4,14 @@
 //! Starts from the linear interpolation of the two samples and takes [`STEPS`] safeguarded Newton
 //! steps along the edge (the derivative along the edge is the gradient's component), keeping a
 //! bracket from the sample signs and bisecting whenever a step leaves it. All crossings of a block
-//! are refined together, one batched evaluation per step.
+//! are refined together, one batched evaluation per step ([`Evaluator::values_gradients`]).
 
 use super::certify::CROSSING_MARGIN;
 use glam::DVec3;
-use solidkit_kernel::Program;
-use solidkit_kernel::program::GradientScratch;
+use solidkit_kernel::Evaluator;
 
 /// Field evaluations per crossing (the last one gives the normal at the final point).
 pub(crate) const STEPS: usize = 3;
-
-/// A field dual contouring can search: values and gradients in double precision at many points.
-pub trait DcField: Sync {
-    /// Reusable buffers of one worker.
-    type Scratch: Default + Send;
-    /// Values and gradients at `points`.
-    fn values_gradients(
-        &self,
-        points: &[DVec3],
-        values: &mut [f64],
-        gradients: &mut [DVec3],
-        scratch: &mut Self::Scratch,
-    );
-}
-
-impl DcField for Program {
-    type Scratch = GradientScratch;
-
-    fn values_gradients(
-        &self,
-        points: &[DVec3],
-        values: &mut [f64],
-        gradients: &mut [DVec3],
-        scratch: &mut GradientScratch,
-    ) {
-        Program::values_gradients(self, points, values, gradients, scratch);
-    }
-}
 
 /// One sign-changing edge: from `a` (sample value `fa`) to `b` (`fb`).
 #[derive(Debug, Clone, Copy)]
@@ -65,12 +36,12 @@ pub(crate) struct CrossingScratch {
 /// Crossing points and unit normals (pointing to positive values) of `queries`, appended to `out`.
 /// Points stay [`CROSSING_MARGIN`] (of the edge length) away from the samples, so every crossing
 /// lies strictly inside its edge (a surface through a sample is moved that far).
-pub(crate) fn refine<F: DcField>(
+pub(crate) fn refine<F: Evaluator>(
     field: &F,
     queries: &[EdgeQuery],
     out: &mut Vec<(DVec3, DVec3)>,
     s: &mut CrossingScratch,
-    fs: &mut F::Scratch,
+    fs: &mut F::GradientScratch,
 ) {
     let n = queries.len();
     s.t.clear();

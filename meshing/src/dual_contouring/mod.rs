@@ -44,16 +44,15 @@ mod patches;
 mod qef;
 mod sources;
 
-pub use crossing::DcField;
-
 use crate::IndexedMesh;
 use crate::grid::GridSpec;
 use crate::marching_cubes::SampleGrid;
 use crate::octree::{Cancelled, MeshStats, SparseOptions};
 use crate::sink::MeshSink;
 use glam::DVec3;
+use solidkit_kernel::Evaluator;
+#[cfg(doc)]
 use solidkit_kernel::Program;
-use solidkit_kernel::program::BatchScratch;
 
 /// Options of dual contouring.
 #[derive(Debug, Clone, Default)]
@@ -65,9 +64,10 @@ pub struct DcOptions {
     pub tolerance: Option<f64>,
 }
 
-/// Dual contouring of the zero set of `program` over `spec`, on the sparse octree.
-pub fn mesh_dc(
-    program: &Program,
+/// Dual contouring of the zero set of `program` (any [`Evaluator`], usually a [`Program`]) over
+/// `spec`, on the sparse octree.
+pub fn mesh_dc<E: Evaluator>(
+    program: &E,
     spec: GridSpec,
     opts: &DcOptions,
 ) -> Result<(IndexedMesh, MeshStats), Cancelled> {
@@ -77,18 +77,20 @@ pub fn mesh_dc(
 }
 
 /// [`mesh_dc`] into any sink.
-pub fn mesh_dc_into(
-    program: &Program,
+pub fn mesh_dc_into<E: Evaluator>(
+    program: &E,
     spec: GridSpec,
     opts: &DcOptions,
     sink: &mut impl MeshSink,
 ) -> Result<MeshStats, Cancelled> {
     let mut stats = MeshStats::default();
     let keep = opts.tolerance.is_some();
-    let blocks = sources::sparse_blocks(program, &spec, &opts.sparse, keep, &mut stats)?;
+    let sources::SparseBlocks { blocks, evaluators } =
+        sources::sparse_blocks(program, &spec, &opts.sparse, keep, &mut stats)?;
     let t = std::time::Instant::now();
     let brick = opts.sparse.brick_size();
-    let contour = contour::assemble(&blocks, &spec, brick, &contour::ProgramProbe);
+    let probe = contour::ProgramProbe(&evaluators);
+    let contour = contour::assemble(&blocks, &spec, brick, &probe);
     let mut positions = contour.positions.clone();
     let triangles = match opts.tolerance {
         Some(tol) => {
@@ -101,21 +103,22 @@ pub fn mesh_dc_into(
                 program,
                 spec,
                 cache: Default::default(),
-                batch: BatchScratch::new(program),
+                batch: E::BatchScratch::default(),
             };
             adapt::simplify(&blocks, &contour, &spec, &mut signs, tol, &mut positions)
         }
         None => emit::triangles(&contour, &mut positions, None),
     };
-    drop(blocks);
+    drop((blocks, evaluators));
     write(&positions, &triangles, sink);
     stats.assemble_s = t.elapsed().as_secs_f64();
     Ok(stats)
 }
 
-/// Dual contouring of a dense sample grid, searching crossings on `field` (any field that agrees
-/// in sign with the samples: tests use trilinear interpolants of arbitrary sign patterns).
-pub fn mesh_dc_samples<F: DcField>(
+/// Dual contouring of a dense sample grid, searching crossings on `field` (any evaluator that
+/// agrees in sign with the samples: tests use trilinear interpolants of arbitrary sign patterns;
+/// only [`Evaluator::values_gradients`] is called).
+pub fn mesh_dc_samples<F: Evaluator>(
     field: &F,
     samples: &SampleGrid,
     tolerance: Option<f64>,

@@ -1,28 +1,34 @@
-//! Where blocks come from: the sparse octree's leaf bricks (sampled with their pruned programs,
-//! searched with the same programs), or tiles of a dense [`SampleGrid`] with any [`DcField`].
-//! Also the sign lookup of any grid sample that adaptive simplification needs.
+//! Where blocks come from: the sparse octree's leaf bricks (sampled with their pruned evaluators,
+//! searched with the same evaluators), or tiles of a dense [`SampleGrid`] searched with any
+//! [`Evaluator`]. Also the sign lookup of any grid sample that adaptive simplification needs.
 
 use super::block::{Block, BlockScratch, build};
-use super::crossing::DcField;
 use crate::grid::GridSpec;
 use crate::marching_cubes::sign::{LONE_ZERO, lone_inside};
 use crate::marching_cubes::{SampleGrid, inside, settle};
 use crate::octree::grid_value;
 use crate::octree::{BoxSamples, Cancelled, MeshStats, Progress, SparseOptions};
 use rayon::prelude::*;
-use solidkit_kernel::Program;
-use solidkit_kernel::program::BatchScratch;
+use solidkit_kernel::Evaluator;
 use std::collections::HashMap;
+use std::sync::Arc;
 use std::sync::atomic::{AtomicUsize, Ordering};
 
-/// Blocks of the sparse octree's surface bricks, sorted by block coordinates (z, y, x).
-pub(crate) fn sparse_blocks(
-    program: &Program,
+/// Blocks of the sparse octree's surface bricks, sorted by block coordinates (z, y, x), each with
+/// the pruned evaluator of its brick (`evaluators[b]` for `blocks[b]`).
+pub(crate) struct SparseBlocks<E> {
+    pub blocks: Vec<Block>,
+    pub evaluators: Vec<Arc<E>>,
+}
+
+/// The sparse octree's blocks.
+pub(crate) fn sparse_blocks<E: Evaluator>(
+    program: &E,
     spec: &GridSpec,
     opts: &SparseOptions,
     keep: bool,
     stats: &mut MeshStats,
-) -> Result<Vec<Block>, Cancelled> {
+) -> Result<SparseBlocks<E>, Cancelled> {
     let t0 = std::time::Instant::now();
     let leaves = crate::octree::surface_nodes(program, spec, opts, stats)?;
     stats.octree_s = t0.elapsed().as_secs_f64();
@@ -31,23 +37,24 @@ pub(crate) fn sparse_blocks(
     let done = AtomicUsize::new(0);
     let total = leaves.len();
     let t1 = std::time::Instant::now();
-    let mut blocks: Vec<Block> = leaves
+    let mut blocks: Vec<(Block, Arc<E>)> = leaves
         .par_iter()
         .map_init(
             || {
                 (
                     BlockScratch::default(),
-                    BatchScratch::default(),
-                    BoxSamples::default(),
+                    E::BatchScratch::default(),
+                    BoxSamples::<E>::default(),
                 )
             },
             |(scratch, batch, values), leaf| {
                 if opts.is_cancelled() {
-                    return Block::default();
+                    return (Block::default(), leaf.program.clone());
                 }
                 let e = leaf.extent(spec);
                 let n = [e[0] + 1, e[1] + 1, e[2] + 1];
-                let sampling = values.sample(&leaf.program, program, spec, leaf.min, n, batch);
+                let sampling =
+                    values.sample(leaf.program.as_ref(), program, spec, leaf.min, n, batch);
                 let mut b = build(
                     leaf.program.as_ref(),
                     spec,
@@ -60,14 +67,13 @@ pub(crate) fn sparse_blocks(
                 );
                 b.evaluation_s += sampling;
                 b.thin = values.thin;
-                b.program = Some(leaf.program.clone());
                 let d = done.fetch_add(1, Ordering::Relaxed) + 1;
                 opts.report(Progress {
                     stage: "bricks",
                     done: d,
                     total,
                 });
-                b
+                (b, leaf.program.clone())
             },
         )
         .collect();
@@ -75,17 +81,18 @@ pub(crate) fn sparse_blocks(
         return Err(Cancelled);
     }
     stats.bricks_s = t1.elapsed().as_secs_f64();
-    stats.samples_evaluated = blocks.iter().map(|b| b.samples).sum();
-    stats.evaluation_cpu_s = blocks.iter().map(|b| b.evaluation_s).sum();
-    for b in &blocks {
+    stats.samples_evaluated = blocks.iter().map(|(b, _)| b.samples).sum();
+    stats.evaluation_cpu_s = blocks.iter().map(|(b, _)| b.evaluation_s).sum();
+    for (b, _) in &blocks {
         stats.thin.add(&b.thin);
     }
-    blocks.sort_unstable_by_key(|b| (b.coord[2], b.coord[1], b.coord[0]));
-    Ok(blocks)
+    blocks.sort_unstable_by_key(|(b, _)| (b.coord[2], b.coord[1], b.coord[0]));
+    let (blocks, evaluators) = blocks.into_iter().unzip();
+    Ok(SparseBlocks { blocks, evaluators })
 }
 
 /// Blocks of `block`³ cells tiling a dense sample grid, searched with `field`.
-pub(crate) fn dense_blocks<F: DcField>(
+pub(crate) fn dense_blocks<F: Evaluator>(
     field: &F,
     samples: &SampleGrid,
     block: usize,
@@ -129,18 +136,18 @@ impl Signs for &SampleGrid {
 }
 
 /// Signs of the sparse path: the samples of a block containing the sample, else (the sample lies
-/// in a box the octree culled, whose samples all share one sign) the full program's f32 value.
-pub(crate) struct SparseSigns<'a> {
+/// in a box the octree culled, whose samples all share one sign) the full evaluator's f32 value.
+pub(crate) struct SparseSigns<'a, E: Evaluator> {
     pub blocks: &'a [Block],
     pub index: &'a super::cells::BlockIndex,
     pub block_size: usize,
-    pub program: &'a Program,
+    pub program: &'a E,
     pub spec: GridSpec,
     pub cache: HashMap<[usize; 3], bool>,
-    pub batch: BatchScratch,
+    pub batch: E::BatchScratch,
 }
 
-impl Signs for SparseSigns<'_> {
+impl<E: Evaluator> Signs for SparseSigns<'_, E> {
     fn inside(&mut self, s: [usize; 3]) -> bool {
         let bs = self.block_size;
         for mask in 0..8 {
@@ -176,7 +183,7 @@ impl Signs for SparseSigns<'_> {
         let raw = grid_value(program, spec, s, &mut self.batch);
         let p = [0, 1, 2].map(|a| spec.coordinate(a, s[a]));
         let settled = settle(p[0], p[1], p[2], raw, |q| {
-            program.zero_side(q, &mut Vec::new())
+            program.zero_side(q, &mut Default::default())
         });
         let v = if settled == LONE_ZERO {
             lone_inside(s, spec.samples(), |q| {

@@ -9,39 +9,97 @@ use crate::TopologyReport;
 use crate::marching_cubes::mesh_samples;
 use crate::octree::mesh_sparse;
 use glam::DVec3;
-use solidkit_kernel::Solid;
+use solidkit_kernel::eval::{Evaluator, ZeroSide};
 use solidkit_kernel::models::{SplitMix64, gyroid_sphere};
+use solidkit_kernel::{Aabb, Interval, Solid};
 
 /// Trilinear interpolation of grid samples: continuous, with the samples' signs, and a gradient.
+/// An [`Evaluator`] with intervals bounded by the samples (whole-range off the grid), no pruning
+/// and no zero rule of its own.
+#[derive(Clone)]
 pub(super) struct Trilinear<'a>(pub &'a SampleGrid);
 
-impl DcField for Trilinear<'_> {
-    type Scratch = ();
-
-    fn values_gradients(&self, pts: &[DVec3], values: &mut [f64], grads: &mut [DVec3], _: &mut ()) {
+impl Trilinear<'_> {
+    /// Value and gradient at `p` (extrapolated from the nearest cell off the grid).
+    fn at(&self, p: DVec3) -> (f64, DVec3) {
         let g = self.0;
         let spec = &g.spec;
-        for (k, p) in pts.iter().enumerate() {
-            let q = (*p - spec.origin) / spec.cell;
-            let c = [0, 1, 2].map(|a| (q[a].floor().max(0.0) as usize).min(spec.cells[a] - 1));
-            let f = [0, 1, 2].map(|a| q[a] - c[a] as f64);
-            let mut v = 0.0;
-            let mut d = DVec3::ZERO;
-            for corner in 0..8 {
-                let o = [corner & 1, corner >> 1 & 1, corner >> 2 & 1];
-                let s = g.at(c[0] + o[0], c[1] + o[1], c[2] + o[2]) as f64;
-                let w = |a: usize| if o[a] == 1 { f[a] } else { 1.0 - f[a] };
-                let dw = |a: usize| if o[a] == 1 { 1.0 } else { -1.0 };
-                v += s * w(0) * w(1) * w(2);
-                d += s * DVec3::new(
-                    dw(0) * w(1) * w(2),
-                    w(0) * dw(1) * w(2),
-                    w(0) * w(1) * dw(2),
-                );
-            }
-            values[k] = v;
-            grads[k] = d / spec.cell;
+        let q = (p - spec.origin) / spec.cell;
+        let c = [0, 1, 2].map(|a| (q[a].floor().max(0.0) as usize).min(spec.cells[a] - 1));
+        let f = [0, 1, 2].map(|a| q[a] - c[a] as f64);
+        let mut v = 0.0;
+        let mut d = DVec3::ZERO;
+        for corner in 0..8 {
+            let o = [corner & 1, corner >> 1 & 1, corner >> 2 & 1];
+            let s = g.at(c[0] + o[0], c[1] + o[1], c[2] + o[2]) as f64;
+            let w = |a: usize| if o[a] == 1 { f[a] } else { 1.0 - f[a] };
+            let dw = |a: usize| if o[a] == 1 { 1.0 } else { -1.0 };
+            v += s * w(0) * w(1) * w(2);
+            d += s * DVec3::new(
+                dw(0) * w(1) * w(2),
+                w(0) * dw(1) * w(2),
+                w(0) * w(1) * dw(2),
+            );
         }
+        (v, d / spec.cell)
+    }
+}
+
+impl Evaluator for Trilinear<'_> {
+    type BatchScratch = ();
+    type PointScratch = ();
+    type GradientScratch = ();
+    type IntervalScratch = ();
+    type ZeroScratch = ();
+
+    fn len(&self) -> usize {
+        1
+    }
+
+    fn eval_many(&self, x: &[f32], y: &[f32], z: &[f32], out: &mut [f32], _: &mut ()) {
+        for (i, o) in out.iter_mut().enumerate() {
+            *o = self.at(DVec3::new(x[i] as f64, y[i] as f64, z[i] as f64)).0 as f32;
+        }
+    }
+
+    fn value_with(&self, p: DVec3, _: &mut ()) -> f64 {
+        self.at(p).0
+    }
+
+    fn values_gradients(&self, pts: &[DVec3], values: &mut [f64], grads: &mut [DVec3], _: &mut ()) {
+        for (k, p) in pts.iter().enumerate() {
+            (values[k], grads[k]) = self.at(*p);
+        }
+    }
+
+    /// The range of the samples at the corners of the cells `b` touches (a trilinear cell stays
+    /// within its corners' range); the whole line where `b` leaves the grid.
+    fn interval_with(&self, b: &Aabb, _: &mut ()) -> Interval {
+        let spec = &self.0.spec;
+        let lo = (b.min - spec.origin) / spec.cell;
+        let hi = (b.max - spec.origin) / spec.cell;
+        if (0..3).any(|a| !(lo[a] >= 0.0 && hi[a] <= spec.cells[a] as f64)) {
+            return Interval::entire();
+        }
+        let range = |a: usize| lo[a].floor() as usize..=(hi[a].ceil() as usize).min(spec.cells[a]);
+        let (mut min, mut max) = (f64::INFINITY, f64::NEG_INFINITY);
+        for k in range(2) {
+            for j in range(1) {
+                for i in range(0) {
+                    let s = self.0.at(i, j, k) as f64;
+                    (min, max) = (min.min(s), max.max(s));
+                }
+            }
+        }
+        Interval::new(min, max)
+    }
+
+    fn prune(&self, _: &mut ()) -> Option<Self> {
+        None
+    }
+
+    fn zero_side(&self, _: DVec3, _: &mut ()) -> ZeroSide {
+        ZeroSide::Surface
     }
 }
 

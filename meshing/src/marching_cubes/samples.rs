@@ -4,8 +4,7 @@ use super::sign::{LONE_ZERO, resolve_lone, settle, settle_field};
 use crate::grid::GridSpec;
 use glam::DVec3;
 use rayon::prelude::*;
-use solidkit_kernel::program::BatchScratch;
-use solidkit_kernel::{Field, Program};
+use solidkit_kernel::{Evaluator, Field};
 
 /// Field values at every sample of a grid, in single precision (what the batch evaluator
 /// produces; vertex interpolation is done in double precision from these values).
@@ -42,20 +41,20 @@ impl SampleGrid {
         Self::settled(spec, values)
     }
 
-    /// Samples a lowered solid at every grid point with the full program (the dense path: no
-    /// pruning), one z-slice per parallel task.
-    pub fn sample_program(program: &Program, spec: GridSpec) -> Self {
+    /// Samples a lowered solid (any [`Evaluator`], usually a `Program`) at every grid point with
+    /// the full evaluator (the dense path: no pruning), one z-slice per parallel task.
+    pub fn sample_program<E: Evaluator>(program: &E, spec: GridSpec) -> Self {
         let [sx, sy, _] = spec.samples();
         let mut values = vec![0.0f32; spec.sample_count()];
         values
             .par_chunks_mut(sx * sy)
             .enumerate()
             .for_each(|(k, slice)| {
-                let mut scratch = BatchScratch::new(program);
+                let mut scratch = E::BatchScratch::default();
                 let x: Vec<f32> = (0..sx).map(|i| spec.coordinate(0, i)).collect();
                 let z = vec![spec.coordinate(2, k); sx];
                 let mut y = vec![0f32; sx];
-                let mut slots = Vec::new();
+                let mut slots = E::ZeroScratch::default();
                 for (j, out) in slice.chunks_mut(sx).enumerate() {
                     y.fill(spec.coordinate(1, j));
                     program.eval_many(&x, &y, &z, out, &mut scratch);

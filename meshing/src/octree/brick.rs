@@ -1,4 +1,4 @@
-//! One leaf brick: sample its grid points with its pruned program, then list the crossing edges
+//! One leaf brick: sample its grid points with its pruned evaluator, then list the crossing edges
 //! it owns and its cells' triangles, both grouped by grid row in the dense path's order.
 //!
 //! Ownership: a brick owns the edges whose lower sample lies in it — local coordinates below the
@@ -15,8 +15,7 @@ use crate::marching_cubes::sign::{LONE_ZERO, resolve_lone};
 use crate::marching_cubes::table::{CENTRE, NO_CENTRE, case_table, edge_origin};
 use crate::marching_cubes::{edge_vertex, inside, settle, snap_noise};
 use glam::Vec3;
-use solidkit_kernel::Program;
-use solidkit_kernel::program::{BatchScratch, IntervalScratch};
+use solidkit_kernel::Evaluator;
 
 /// Number of distinct local edge ids (14 bits).
 pub(crate) const LOCAL_EDGE_IDS: usize = 1 << 14;
@@ -83,44 +82,68 @@ pub(crate) struct BrickTriangles {
 }
 
 /// Per-thread buffers reused from brick to brick.
-#[derive(Default)]
-pub(crate) struct BrickScratch {
-    samples: BoxSamples,
+pub(crate) struct BrickScratch<E: Evaluator> {
+    samples: BoxSamples<E>,
     inside: Vec<u8>,
-    batch: BatchScratch,
+    batch: E::BatchScratch,
     evaluation_s: f64,
 }
 
-/// The sample points of a box of the grid (x fastest) and the program's values there.
-#[derive(Default)]
-pub(crate) struct BoxSamples {
+impl<E: Evaluator> Default for BrickScratch<E> {
+    fn default() -> Self {
+        Self {
+            samples: BoxSamples::default(),
+            inside: Vec::new(),
+            batch: Default::default(),
+            evaluation_s: 0.0,
+        }
+    }
+}
+
+/// The sample points of a box of the grid (x fastest) and the evaluator's values there.
+pub(crate) struct BoxSamples<E: Evaluator> {
     x: Vec<f32>,
     y: Vec<f32>,
     z: Vec<f32>,
     /// Values at the points, settled ([`settle`]: noise snapped, zeros signed by perturbation).
     pub values: Vec<f32>,
     /// Scratch of the symbolic inside test at zeros.
-    zero_slots: Vec<solidkit_kernel::program::perturb::ZeroSlot>,
+    zero_slots: E::ZeroScratch,
     /// Indices of the lone zeros of the last box sampled (see [`resolve_lone`]).
     lone: Vec<usize>,
     /// Thin and hidden features of the last box sampled ([`super::thin`]).
     pub thin: ThinCounts,
     /// Scratch of the feature search.
-    interval: IntervalScratch,
+    interval: E::IntervalScratch,
 }
 
-impl BoxSamples {
+impl<E: Evaluator> Default for BoxSamples<E> {
+    fn default() -> Self {
+        Self {
+            x: Vec::new(),
+            y: Vec::new(),
+            z: Vec::new(),
+            values: Vec::new(),
+            zero_slots: Default::default(),
+            lone: Vec::new(),
+            thin: ThinCounts::default(),
+            interval: Default::default(),
+        }
+    }
+}
+
+impl<E: Evaluator> BoxSamples<E> {
     /// Samples the `n[0] × n[1] × n[2]` grid points from `min` with `program` (pruned for the
-    /// box; `root` is the full program, for lattice neighbours outside the box); returns the
+    /// box; `root` is the full evaluator, for lattice neighbours outside the box); returns the
     /// evaluation time in seconds. The one sampling rule of the sparse MC and DC paths.
     pub(crate) fn sample(
         &mut self,
-        program: &Program,
-        root: &Program,
+        program: &E,
+        root: &E,
         spec: &GridSpec,
         min: [usize; 3],
         n: [usize; 3],
-        batch: &mut BatchScratch,
+        batch: &mut E::BatchScratch,
     ) -> f64 {
         for v in [&mut self.x, &mut self.y, &mut self.z] {
             v.clear();
@@ -163,11 +186,11 @@ impl BoxSamples {
 
 /// The settled-but-lone value (noise snapped, zeros left zero) of grid sample `q` by `program`:
 /// single precision at the sample's single-precision coordinates, as every sampler evaluates it.
-pub(crate) fn grid_value(
-    program: &Program,
+pub(crate) fn grid_value<E: Evaluator>(
+    program: &E,
     spec: &GridSpec,
     q: [usize; 3],
-    batch: &mut BatchScratch,
+    batch: &mut E::BatchScratch,
 ) -> f32 {
     let p = [0, 1, 2].map(|a| spec.coordinate(a, q[a]));
     let mut out = [0.0f32];
@@ -175,8 +198,15 @@ pub(crate) fn grid_value(
     snap_noise(p[0], p[1], p[2], out[0])
 }
 
-/// Samples the brick's points (x fastest) with its program into `s.samples.values` and `s.inside`.
-fn sample(node: &Node, root: &Program, spec: &GridSpec, n: [usize; 3], s: &mut BrickScratch) {
+/// Samples the brick's points (x fastest) with its evaluator into `s.samples.values` and
+/// `s.inside`.
+fn sample<E: Evaluator>(
+    node: &Node<E>,
+    root: &E,
+    spec: &GridSpec,
+    n: [usize; 3],
+    s: &mut BrickScratch<E>,
+) {
     s.evaluation_s = s
         .samples
         .sample(&node.program, root, spec, node.min, n, &mut s.batch);
@@ -185,12 +215,12 @@ fn sample(node: &Node, root: &Program, spec: &GridSpec, n: [usize; 3], s: &mut B
         .extend(s.samples.values.iter().map(|&v| u8::from(inside(v))));
 }
 
-pub(crate) fn process(
-    node: &Node,
-    root: &Program,
+pub(crate) fn process<E: Evaluator>(
+    node: &Node<E>,
+    root: &E,
     spec: &GridSpec,
     brick: usize,
-    s: &mut BrickScratch,
+    s: &mut BrickScratch<E>,
 ) -> BrickOutput {
     let e = node.extent(spec);
     let n = [e[0] + 1, e[1] + 1, e[2] + 1];

@@ -1,6 +1,8 @@
 //! Sparse meshing: an octree over the sample grid culls boxes the field's interval shows to be
 //! wholly inside or outside, prunes the program for the boxes the surface may cross, and runs
 //! marching cubes only in the surviving leaf bricks. Cost grows with the surface, not the volume.
+//! Everything here is generic over the kernel's [`Evaluator`] (monomorphized: a [`Program`]
+//! compiles to direct calls of its own methods).
 //!
 //! The output is identical, bit for bit, to dense marching cubes over the same grid with the full
 //! program ([`mesh_dense`]), whatever the number of threads: pruned programs give the same f32
@@ -27,12 +29,15 @@ use crate::grid::GridSpec;
 use crate::marching_cubes::{SampleGrid, polygonize_into};
 use crate::sink::MeshSink;
 use rayon::prelude::*;
+use solidkit_kernel::Evaluator;
+#[cfg(doc)]
 use solidkit_kernel::Program;
 use std::sync::atomic::Ordering;
 
-/// Meshes the zero set of `program` over `spec` with the sparse octree.
-pub fn mesh_sparse(
-    program: &Program,
+/// Meshes the zero set of `program` (any [`Evaluator`], usually a [`Program`]) over `spec` with
+/// the sparse octree.
+pub fn mesh_sparse<E: Evaluator>(
+    program: &E,
     spec: GridSpec,
     opts: &SparseOptions,
 ) -> Result<(IndexedMesh, MeshStats), Cancelled> {
@@ -42,8 +47,8 @@ pub fn mesh_sparse(
 }
 
 /// Meshes the zero set of `program` over `spec` with the sparse octree into `sink`.
-pub fn mesh_sparse_into(
-    program: &Program,
+pub fn mesh_sparse_into<E: Evaluator>(
+    program: &E,
     spec: GridSpec,
     opts: &SparseOptions,
     sink: &mut impl MeshSink,
@@ -93,7 +98,7 @@ pub fn mesh_sparse_into(
 
 /// Dense marching cubes with the full program at every sample: the reference the sparse path
 /// must reproduce exactly.
-pub fn mesh_dense(program: &Program, spec: GridSpec) -> IndexedMesh {
+pub fn mesh_dense<E: Evaluator>(program: &E, spec: GridSpec) -> IndexedMesh {
     let samples = SampleGrid::sample_program(program, spec);
     let mut mesh = IndexedMesh::default();
     polygonize_into(&samples, &mut mesh);

@@ -1,22 +1,22 @@
 //! Octree subdivision, level by level: each box's interval classifies it (inside, outside, or
-//! surface) and prunes its program; surface boxes split into eight until they are leaf bricks.
+//! surface) and prunes its evaluator; surface boxes split into eight until they are leaf bricks.
 
 use super::control::{Cancelled, MeshStats, Progress, SparseOptions};
 use crate::grid::GridSpec;
 use rayon::prelude::*;
-use solidkit_kernel::program::{IntervalScratch, Pruned};
-use solidkit_kernel::{Aabb, Program};
+use solidkit_kernel::Aabb;
+use solidkit_kernel::eval::{Evaluator, Pruned};
 use std::sync::Arc;
 
-/// An octree box: cells `[min, min + size)` along each axis (clipped to the grid), and the program
-/// valid inside it.
-pub(crate) struct Node {
+/// An octree box: cells `[min, min + size)` along each axis (clipped to the grid), and the
+/// evaluator (program) valid inside it.
+pub(crate) struct Node<E> {
     pub min: [usize; 3],
     pub size: usize,
-    pub program: Arc<Program>,
+    pub program: Arc<E>,
 }
 
-impl Node {
+impl<E> Node<E> {
     /// Cells per axis actually inside the grid.
     pub fn extent(&self, spec: &GridSpec) -> [usize; 3] {
         [0, 1, 2].map(|a| self.size.min(spec.cells[a].saturating_sub(self.min[a])))
@@ -33,13 +33,13 @@ impl Node {
     }
 }
 
-/// The leaf bricks the surface may cross, each with its pruned program.
-pub(crate) fn surface_bricks(
-    program: &Program,
+/// The leaf bricks the surface may cross, each with its pruned evaluator.
+pub(crate) fn surface_bricks<E: Evaluator>(
+    program: &E,
     spec: &GridSpec,
     opts: &SparseOptions,
     stats: &mut MeshStats,
-) -> Result<Vec<Node>, Cancelled> {
+) -> Result<Vec<Node<E>>, Cancelled> {
     let brick = opts.brick_size();
     let longest = spec.cells.iter().copied().max().unwrap_or(1);
     let mut size = brick;
@@ -58,9 +58,9 @@ pub(crate) fn surface_bricks(
             return Err(Cancelled);
         }
         stats.boxes_evaluated += level.len() as u64;
-        let results: Vec<(Vec<Node>, Option<Node>)> = level
+        let results: Vec<Split<E>> = level
             .into_par_iter()
-            .map_init(IntervalScratch::default, |scratch, node| {
+            .map_init(E::IntervalScratch::default, |scratch, node| {
                 split(node, spec, brick, scratch)
             })
             .collect();
@@ -81,13 +81,16 @@ pub(crate) fn surface_bricks(
     Ok(leaves)
 }
 
+/// What [`split`] makes of a box: its children and, for a leaf brick, the leaf.
+type Split<E> = (Vec<Node<E>>, Option<Node<E>>);
+
 /// Classifies one box: culled (no output), a leaf brick, or eight children.
-fn split(
-    node: Node,
+fn split<E: Evaluator>(
+    node: Node<E>,
     spec: &GridSpec,
     brick: usize,
-    scratch: &mut IntervalScratch,
-) -> (Vec<Node>, Option<Node>) {
+    scratch: &mut E::IntervalScratch,
+) -> Split<E> {
     let program = match node.program.prune_for_box(&node.bounds(spec), scratch) {
         Pruned::Inside | Pruned::Outside => return (Vec::new(), None),
         Pruned::Surface(Some(p)) => Arc::new(p),

@@ -5,7 +5,7 @@
 //! neighbours of a sample along some axis are on the other side: an *isolated* sample; the mesh
 //! then holds the feature as a sliver of the wrong volume) or missed entirely (all corners of the
 //! cells it lies in agree: a *hidden* feature). Both are found here, from the samples the brick
-//! has anyway plus a search with the brick's pruned program where the samples hint at a feature:
+//! has anyway plus a search with the brick's pruned evaluator where the samples hint at a feature:
 //!
 //! - along every grid line, an edge whose two samples are on the same side but whose outer
 //!   neighbours slope towards it so steeply that the two slopes, extended, meet on the other
@@ -23,8 +23,7 @@
 
 use crate::grid::GridSpec;
 use glam::DVec3;
-use solidkit_kernel::program::IntervalScratch;
-use solidkit_kernel::{Aabb, Program};
+use solidkit_kernel::{Aabb, Evaluator};
 use std::collections::VecDeque;
 
 /// Depth of the search below a cell: octants down to `1 / 2^SEARCH_DEPTH` of a cell.
@@ -85,13 +84,13 @@ impl ThinCounts {
 
 /// Scans the settled `values` of the `n[0] × n[1] × n[2]` samples from grid index `min` (x
 /// fastest), searching with `program` (valid in their box).
-pub fn scan(
+pub fn scan<E: Evaluator>(
     values: &[f32],
     n: [usize; 3],
     min: [usize; 3],
     spec: &GridSpec,
-    program: &Program,
-    scratch: &mut IntervalScratch,
+    program: &E,
+    scratch: &mut E::IntervalScratch,
 ) -> ThinCounts {
     let mut counts = ThinCounts::default();
     let stride = [1, n[0], n[0] * n[1]];
@@ -227,13 +226,13 @@ fn count_layers(values: &[f32], n: [usize; 3], counts: &mut ThinCounts) {
 /// Searches the cells around the candidate edge from sample `at` along `axes[0]` (whose two
 /// samples are on side `here`).
 #[allow(clippy::too_many_arguments)]
-fn candidate(
+fn candidate<E: Evaluator>(
     values: &[f32],
     n: [usize; 3],
     min: [usize; 3],
     spec: &GridSpec,
-    program: &Program,
-    scratch: &mut IntervalScratch,
+    program: &E,
+    scratch: &mut E::IntervalScratch,
     at: [usize; 3],
     axes: [usize; 3],
     here: bool,
@@ -303,15 +302,15 @@ fn near_other_side(
 
 /// A point of the cell `[lo, lo + h]³` on the other side of `here` (inside when `here` is
 /// outside), by interval-pruned octant search down to [`SEARCH_DEPTH`].
-fn search(
-    program: &Program,
+fn search<E: Evaluator>(
+    program: &E,
     lo: DVec3,
     h: f64,
     here: bool,
-    scratch: &mut IntervalScratch,
+    scratch: &mut E::IntervalScratch,
 ) -> Option<(DVec3, u32)> {
     let mut queue = VecDeque::from([(lo, h, 0u32)]);
-    let mut slots = Vec::new();
+    let mut slots = E::PointScratch::default();
     let mut evaluated = 0;
     while let Some((lo, size, depth)) = queue.pop_front() {
         evaluated += 1;
