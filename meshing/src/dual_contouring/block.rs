@@ -14,6 +14,7 @@ use super::qef::Qef;
 use crate::grid::GridSpec;
 use crate::marching_cubes::inside;
 use crate::marching_cubes::table::{cell_config, edge_origin};
+use crate::octree::{ClockFn, now};
 use glam::DVec3;
 use solidkit_kernel::Evaluator;
 
@@ -91,6 +92,18 @@ pub(crate) struct BlockScratch<S> {
     crossings: Vec<(DVec3, DVec3)>,
     search: CrossingScratch,
     pub field: S,
+    /// Times the crossing search, when the caller gave a clock.
+    clock: Option<ClockFn>,
+}
+
+impl<S: Default> BlockScratch<S> {
+    /// Empty buffers; the crossing search is timed with `clock` when there is one.
+    pub(crate) fn with_clock(clock: Option<ClockFn>) -> Self {
+        BlockScratch {
+            clock,
+            ..Default::default()
+        }
+    }
 }
 
 /// Builds a block from its samples (`extent + 1` per axis, x fastest).
@@ -140,7 +153,7 @@ pub(crate) fn build<F: Evaluator>(
         }
     }
     s.crossings.clear();
-    let start = std::time::Instant::now();
+    let start = now(s.clock.as_ref());
     refine(
         field,
         &s.queries,
@@ -148,7 +161,7 @@ pub(crate) fn build<F: Evaluator>(
         &mut s.search,
         &mut s.field,
     );
-    let evaluation_s = start.elapsed().as_secs_f64();
+    let evaluation_s = now(s.clock.as_ref()) - start;
     let table = patch_table();
     let cells = e[0] * e[1] * e[2];
     let mut b = Block {

@@ -47,7 +47,7 @@ mod sources;
 use crate::IndexedMesh;
 use crate::grid::GridSpec;
 use crate::marching_cubes::SampleGrid;
-use crate::octree::{Cancelled, MeshStats, SparseOptions};
+use crate::octree::{Cancelled, MeshStats, SparseOptions, now};
 use crate::sink::MeshSink;
 use glam::DVec3;
 use solidkit_kernel::Evaluator;
@@ -87,7 +87,7 @@ pub fn mesh_dc_into<E: Evaluator>(
     let keep = opts.tolerance.is_some();
     let sources::SparseBlocks { blocks, evaluators } =
         sources::sparse_blocks(program, &spec, &opts.sparse, keep, &mut stats)?;
-    let t = std::time::Instant::now();
+    let t = now(opts.sparse.clock.as_ref());
     let brick = opts.sparse.brick_size();
     let probe = contour::ProgramProbe(&evaluators);
     let contour = contour::assemble(&blocks, &spec, brick, &probe);
@@ -111,7 +111,7 @@ pub fn mesh_dc_into<E: Evaluator>(
     };
     drop((blocks, evaluators));
     write(&positions, &triangles, sink);
-    stats.assemble_s = t.elapsed().as_secs_f64();
+    stats.assemble_s = now(opts.sparse.clock.as_ref()) - t;
     Ok(stats)
 }
 

@@ -6,8 +6,8 @@ use super::block::{Block, BlockScratch, build};
 use crate::grid::GridSpec;
 use crate::marching_cubes::sign::{LONE_ZERO, lone_inside};
 use crate::marching_cubes::{SampleGrid, inside, settle};
-use crate::octree::grid_value;
 use crate::octree::{BoxSamples, Cancelled, MeshStats, Progress, SparseOptions};
+use crate::octree::{grid_value, now};
 use rayon::prelude::*;
 use solidkit_kernel::Evaluator;
 use std::collections::HashMap;
@@ -29,22 +29,22 @@ pub(crate) fn sparse_blocks<E: Evaluator>(
     keep: bool,
     stats: &mut MeshStats,
 ) -> Result<SparseBlocks<E>, Cancelled> {
-    let t0 = std::time::Instant::now();
+    let t0 = now(opts.clock.as_ref());
     let leaves = crate::octree::surface_nodes(program, spec, opts, stats)?;
-    stats.octree_s = t0.elapsed().as_secs_f64();
+    stats.octree_s = now(opts.clock.as_ref()) - t0;
     stats.surface_bricks = leaves.len();
     let brick = opts.brick_size();
     let done = AtomicUsize::new(0);
     let total = leaves.len();
-    let t1 = std::time::Instant::now();
+    let t1 = now(opts.clock.as_ref());
     let mut blocks: Vec<(Block, Arc<E>)> = leaves
         .par_iter()
         .map_init(
             || {
                 (
-                    BlockScratch::default(),
+                    BlockScratch::with_clock(opts.clock.clone()),
                     E::BatchScratch::default(),
-                    BoxSamples::<E>::default(),
+                    BoxSamples::<E>::with_clock(opts.clock.clone()),
                 )
             },
             |(scratch, batch, values), leaf| {
@@ -80,7 +80,7 @@ pub(crate) fn sparse_blocks<E: Evaluator>(
     if opts.is_cancelled() {
         return Err(Cancelled);
     }
-    stats.bricks_s = t1.elapsed().as_secs_f64();
+    stats.bricks_s = now(opts.clock.as_ref()) - t1;
     stats.samples_evaluated = blocks.iter().map(|(b, _)| b.samples).sum();
     stats.evaluation_cpu_s = blocks.iter().map(|(b, _)| b.evaluation_s).sum();
     for (b, _) in &blocks {

@@ -841,6 +841,9 @@ fn resolver_errors_carry_kind_and_reader_error() {
 
     let bad = resolver.load("bad.off").expect_err("truncated OFF");
     assert_eq!(bad.kind(), ResolveKind::Format);
-    let inner = bad.inner().downcast_ref::<MeshIoError>().expect("reader error");
+    let inner = bad
+        .inner()
+        .downcast_ref::<MeshIoError>()
+        .expect("reader error");
     assert_eq!(inner.to_string(), bad.to_string());
 }

@@ -7,6 +7,7 @@
 //! Triangle corners are stored as brick-local edge ids (16 bits); [`super::assemble`] resolves
 //! the ones owned by a neighbour.
 
+use super::control::{ClockFn, now};
 use super::subdivide::Node;
 use super::thin::ThinCounts;
 use crate::grid::GridSpec;
@@ -89,10 +90,11 @@ pub(crate) struct BrickScratch<E: Evaluator> {
     evaluation_s: f64,
 }
 
-impl<E: Evaluator> Default for BrickScratch<E> {
-    fn default() -> Self {
+impl<E: Evaluator> BrickScratch<E> {
+    /// Empty buffers; evaluation is timed with `clock` when there is one.
+    pub(crate) fn new(clock: Option<ClockFn>) -> Self {
         Self {
-            samples: BoxSamples::default(),
+            samples: BoxSamples::with_clock(clock),
             inside: Vec::new(),
             batch: Default::default(),
             evaluation_s: 0.0,
@@ -115,10 +117,13 @@ pub(crate) struct BoxSamples<E: Evaluator> {
     pub thin: ThinCounts,
     /// Scratch of the feature search.
     interval: E::IntervalScratch,
+    /// Times the evaluation, when the caller gave a clock.
+    clock: Option<ClockFn>,
 }
 
-impl<E: Evaluator> Default for BoxSamples<E> {
-    fn default() -> Self {
+impl<E: Evaluator> BoxSamples<E> {
+    /// Empty buffers; evaluation is timed with `clock` when there is one.
+    pub(crate) fn with_clock(clock: Option<ClockFn>) -> Self {
         Self {
             x: Vec::new(),
             y: Vec::new(),
@@ -128,11 +133,10 @@ impl<E: Evaluator> Default for BoxSamples<E> {
             lone: Vec::new(),
             thin: ThinCounts::default(),
             interval: Default::default(),
+            clock,
         }
     }
-}
 
-impl<E: Evaluator> BoxSamples<E> {
     /// Samples the `n[0] × n[1] × n[2]` grid points from `min` with `program` (pruned for the
     /// box; `root` is the full evaluator, for lattice neighbours outside the box); returns the
     /// evaluation time in seconds. The one sampling rule of the sparse MC and DC paths.
@@ -160,9 +164,9 @@ impl<E: Evaluator> BoxSamples<E> {
         }
         self.values.clear();
         self.values.resize(self.x.len(), 0.0);
-        let start = std::time::Instant::now();
+        let start = now(self.clock.as_ref());
         program.eval_many(&self.x, &self.y, &self.z, &mut self.values, batch);
-        let seconds = start.elapsed().as_secs_f64();
+        let seconds = now(self.clock.as_ref()) - start;
         let slots = &mut self.zero_slots;
         self.lone.clear();
         for (i, v) in self.values.iter_mut().enumerate() {

@@ -46,6 +46,11 @@ pub struct Progress {
 /// A progress callback (called from worker threads).
 pub type ProgressFn = Arc<dyn Fn(Progress) + Send + Sync>;
 
+/// A monotonic clock the caller supplies: seconds since a fixed instant of its choice. The
+/// meshers read no clock of their own (an embedder may have none, e.g. a browser build); without
+/// one, every timing in [`MeshStats`] is 0.
+pub type ClockFn = Arc<dyn Fn() -> f64 + Send + Sync>;
+
 /// Options of sparse meshing.
 #[derive(Clone)]
 pub struct SparseOptions {
@@ -55,6 +60,8 @@ pub struct SparseOptions {
     pub cancel: Option<CancelToken>,
     /// Receives progress reports.
     pub progress: Option<ProgressFn>,
+    /// Times the stages ([`MeshStats`]' seconds); none: no clock is read.
+    pub clock: Option<ClockFn>,
 }
 
 impl Default for SparseOptions {
@@ -63,6 +70,7 @@ impl Default for SparseOptions {
             brick_cells: 8,
             cancel: None,
             progress: None,
+            clock: None,
         }
     }
 }
@@ -73,11 +81,17 @@ impl std::fmt::Debug for SparseOptions {
             .field("brick_cells", &self.brick_cells)
             .field("cancel", &self.cancel)
             .field("progress", &self.progress.is_some())
+            .field("clock", &self.clock.is_some())
             .finish()
     }
 }
 
 impl SparseOptions {
+    /// The caller's clock reading, or 0 without a clock.
+    pub(crate) fn now(&self) -> f64 {
+        now(self.clock.as_ref())
+    }
+
     pub(crate) fn is_cancelled(&self) -> bool {
         self.cancel.as_ref().is_some_and(CancelToken::is_cancelled)
     }
@@ -115,4 +129,9 @@ pub struct MeshStats {
     pub assemble_s: f64,
     /// Features the grid thins or misses, over all leaf bricks ([`super::thin`]).
     pub thin: super::ThinCounts,
+}
+
+/// The reading of `clock`, or 0 without one.
+pub(crate) fn now(clock: Option<&ClockFn>) -> f64 {
+    clock.map_or(0.0, |c| c())
 }

@@ -15,12 +15,15 @@
 mod assemble;
 mod brick;
 mod control;
+pub(crate) use control::now;
 mod subdivide;
 pub mod thin;
 
 /// The surface leaf bricks with their pruned programs (also used by dual contouring).
 pub(crate) use brick::{BoxSamples, grid_value};
-pub use control::{CancelToken, Cancelled, MeshStats, Progress, ProgressFn, SparseOptions};
+pub use control::{
+    CancelToken, Cancelled, ClockFn, MeshStats, Progress, ProgressFn, SparseOptions,
+};
 pub(crate) use subdivide::surface_bricks as surface_nodes;
 pub use thin::ThinCounts;
 
@@ -54,28 +57,31 @@ pub fn mesh_sparse_into<E: Evaluator>(
     sink: &mut impl MeshSink,
 ) -> Result<MeshStats, Cancelled> {
     let mut stats = MeshStats::default();
-    let t0 = std::time::Instant::now();
+    let t0 = opts.now();
     let leaves = subdivide::surface_bricks(program, &spec, opts, &mut stats)?;
-    let t1 = std::time::Instant::now();
-    stats.octree_s = (t1 - t0).as_secs_f64();
+    let t1 = opts.now();
+    stats.octree_s = t1 - t0;
     stats.surface_bricks = leaves.len();
     let done = std::sync::atomic::AtomicUsize::new(0);
     let total = leaves.len();
     let mut outputs: Vec<brick::BrickOutput> = leaves
         .par_iter()
-        .map_init(brick::BrickScratch::default, |scratch, leaf| {
-            if opts.is_cancelled() {
-                return brick::BrickOutput::default();
-            }
-            let out = brick::process(leaf, program, &spec, opts.brick_size(), scratch);
-            let n = done.fetch_add(1, Ordering::Relaxed) + 1;
-            opts.report(Progress {
-                stage: "bricks",
-                done: n,
-                total,
-            });
-            out
-        })
+        .map_init(
+            || brick::BrickScratch::new(opts.clock.clone()),
+            |scratch, leaf| {
+                if opts.is_cancelled() {
+                    return brick::BrickOutput::default();
+                }
+                let out = brick::process(leaf, program, &spec, opts.brick_size(), scratch);
+                let n = done.fetch_add(1, Ordering::Relaxed) + 1;
+                opts.report(Progress {
+                    stage: "bricks",
+                    done: n,
+                    total,
+                });
+                out
+            },
+        )
         .collect();
     if opts.is_cancelled() {
         return Err(Cancelled);
@@ -86,13 +92,13 @@ pub fn mesh_sparse_into<E: Evaluator>(
     for o in &outputs {
         stats.thin.add(&o.thin);
     }
-    let t2 = std::time::Instant::now();
-    stats.bricks_s = (t2 - t1).as_secs_f64();
+    let t2 = opts.now();
+    stats.bricks_s = t2 - t1;
     outputs.sort_unstable_by_key(|o| (o.edges.coord[2], o.edges.coord[1], o.edges.coord[0]));
     let (edges, triangles): (Vec<_>, Vec<_>) =
         outputs.into_iter().map(|o| (o.edges, o.triangles)).unzip();
     assemble::assemble(edges, triangles, &spec, opts.brick_size(), sink);
-    stats.assemble_s = t2.elapsed().as_secs_f64();
+    stats.assemble_s = opts.now() - t2;
     Ok(stats)
 }
 

@@ -2,7 +2,7 @@
 //! controls (refinement limits, cancellation, progress) the caller supplies.
 
 use crate::grid::GridSpec;
-use crate::octree::{CancelToken, ProgressFn, SparseOptions};
+use crate::octree::{CancelToken, ClockFn, ProgressFn, SparseOptions};
 use crate::refine::RefineOptions;
 use solidkit_kernel::Aabb;
 
@@ -113,6 +113,13 @@ impl MeshOptions {
     /// Stopped when `token` is cancelled.
     pub fn cancel(mut self, token: CancelToken) -> Self {
         self.sparse.cancel = Some(token);
+        self
+    }
+
+    /// Timing the mesher's stages with `clock` (seconds; the stage timings of
+    /// [`crate::octree::MeshStats`] are 0 without one: no clock is read here).
+    pub fn clock(mut self, clock: ClockFn) -> Self {
+        self.sparse.clock = Some(clock);
         self
     }
 

@@ -117,9 +117,11 @@ pub fn run(sizes: &RawSizes, repeat: u32) -> Result<Vec<RawRow>> {
 /// Meshes `many-8456` on one thread and reports the evaluation rate of the pruned brick programs.
 fn pruned_row(resolution: usize) -> Result<RawRow> {
     let model = Model::by_name("many-8456")?;
+    let start = Instant::now();
     let options = MeshOptions::new(resolution)
         .domain(Domain::Covering(model.domain))
-        .no_refinement();
+        .no_refinement()
+        .clock(std::sync::Arc::new(move || start.elapsed().as_secs_f64()));
     let pool = rayon::ThreadPoolBuilder::new().num_threads(1).build()?;
     let stats = pool.install(|| mesh_solid(&model.solid, &options))?.stats;
     let mean = stats.leaf_instructions / stats.surface_bricks.max(1) as u64;
