@@ -17,6 +17,8 @@ mod check;
 mod memory;
 mod raw;
 mod raw_table;
+#[cfg(test)]
+mod raw_tests;
 mod table;
 
 use crate::args::{BenchArgs, BenchCaseArgs, Method};

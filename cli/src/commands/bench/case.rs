@@ -3,6 +3,7 @@
 
 pub use super::check::Check;
 use super::memory::peak_rss_bytes;
+pub use super::table::median;
 use crate::args::Method;
 use anyhow::{Result, anyhow};
 use serde::{Deserialize, Serialize};
@@ -80,16 +81,6 @@ impl CaseResult {
             map.insert("check_passed".into(), json!(self.check.passed()));
         }
         v
-    }
-}
-
-/// Median of sorted values (mean of the middle two for an even count).
-pub fn median(sorted: &[f64]) -> f64 {
-    let n = sorted.len();
-    match n {
-        0 => f64::NAN,
-        _ if n % 2 == 1 => sorted[n / 2],
-        _ => 0.5 * (sorted[n / 2 - 1] + sorted[n / 2]),
     }
 }
 

@@ -69,6 +69,16 @@ pub fn si(x: f64) -> String {
     format!("{v:.digits$}{p}").trim_end().to_string()
 }
 
+/// Median of sorted values (mean of the middle two for an even count).
+pub fn median(sorted: &[f64]) -> f64 {
+    let n = sorted.len();
+    match n {
+        0 => f64::NAN,
+        _ if n % 2 == 1 => sorted[n / 2],
+        _ => 0.5 * (sorted[n / 2 - 1] + sorted[n / 2]),
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
