@@ -94,7 +94,19 @@ pub fn mesh_refined(
         } else {
             None
         };
-        let Some(grid) = finer(&spec, next).filter(|_| why.is_none()) else {
+        let finer_run = match finer(&spec, next).filter(|_| why.is_none()) {
+            Some(grid) => Some((grid, mesh_at(grid)?)),
+            None => None,
+        };
+        // A finer run over the memory budget meshed nothing: keep this one.
+        let why = match &finer_run {
+            Some((_, (_, s))) if s.over_budget => Some(format!(
+                "the memory limit ({} surface bricks at the next level)",
+                s.surface_bricks
+            )),
+            _ => why,
+        };
+        let Some((grid, (finer_mesh, finer_stats))) = finer_run.filter(|_| why.is_none()) else {
             let t = &stats.thin;
             let at = t
                 .example
@@ -113,7 +125,7 @@ pub fn mesh_refined(
         };
         factor = next;
         fine = grid;
-        (mesh, stats) = mesh_at(fine)?;
+        (mesh, stats) = (finer_mesh, finer_stats);
         samples_total += stats.samples_evaluated;
     }
     let lost_solid = mesh.triangles.is_empty() && stats.thin.detached > 0;

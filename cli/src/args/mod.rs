@@ -1,9 +1,11 @@
 //! Command-line arguments (clap), the contract users and later front ends rely on.
 
 mod r#gen;
+mod memory;
 mod render;
 
 pub use r#gen::GenArgs;
+pub use memory::default_max_memory;
 pub use render::{RenderArgs, parse_size, parse_view};
 
 use clap::{Parser, Subcommand, ValueEnum};
@@ -220,6 +222,11 @@ pub struct MeshArgs {
     /// Most samples a refined run may be expected to evaluate (1000 to 2 000 000 000).
     #[arg(long, default_value_t = 64_000_000, value_parser = parse_refine_budget)]
     pub refine_budget: u64,
+    /// Most memory the mesh and its report may be predicted to need (bytes, or a number with K,
+    /// M, G or T); a grid predicted to need more is refused before meshing (exit 2) and
+    /// refinement stops below it. Default: half of this machine's memory.
+    #[arg(long, value_name = "SIZE", value_parser = memory::parse_memory)]
+    pub max_memory: Option<u64>,
 }
 
 fn parse_refine(s: &str) -> Result<usize, String> {

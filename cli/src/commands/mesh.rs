@@ -35,6 +35,9 @@ pub fn run(a: &MeshArgs) -> Result<u8> {
             max_factor: a.refine,
             budget_samples: a.refine_budget,
         })
+        .max_memory(Some(
+            a.max_memory.unwrap_or_else(crate::args::default_max_memory),
+        ))
         .progress(progress.callback());
     let fail = |e: PipelineError| match e {
         PipelineError::ToleranceNeedsDc | PipelineError::Cancelled(_) => anyhow!(e),

@@ -87,6 +87,9 @@ pub fn mesh_dc_into<E: Evaluator>(
     let keep = opts.tolerance.is_some();
     let sources::SparseBlocks { blocks, evaluators } =
         sources::sparse_blocks(program, &spec, &opts.sparse, keep, &mut stats)?;
+    if stats.over_budget {
+        return Ok(stats);
+    }
     let t = now(opts.sparse.clock.as_ref());
     let brick = opts.sparse.brick_size();
     let probe = contour::ProgramProbe(&evaluators);

@@ -33,6 +33,13 @@ pub(crate) fn sparse_blocks<E: Evaluator>(
     let leaves = crate::octree::surface_nodes(program, spec, opts, stats)?;
     stats.octree_s = now(opts.clock.as_ref()) - t0;
     stats.surface_bricks = leaves.len();
+    if opts.over_budget(leaves.len()) {
+        stats.over_budget = true;
+        return Ok(SparseBlocks {
+            blocks: Vec::new(),
+            evaluators: Vec::new(),
+        });
+    }
     let brick = opts.brick_size();
     let done = AtomicUsize::new(0);
     let total = leaves.len();

@@ -62,6 +62,10 @@ pub struct SparseOptions {
     pub progress: Option<ProgressFn>,
     /// Times the stages ([`MeshStats`]' seconds); none: no clock is read.
     pub clock: Option<ClockFn>,
+    /// Most leaf bricks the surface may cross (the memory budget: the mesh and its report grow
+    /// with them). Above it the mesher stops after the octree, with an empty mesh and
+    /// [`MeshStats::over_budget`] set. None: no limit.
+    pub max_surface_bricks: Option<usize>,
 }
 
 impl Default for SparseOptions {
@@ -71,6 +75,7 @@ impl Default for SparseOptions {
             cancel: None,
             progress: None,
             clock: None,
+            max_surface_bricks: None,
         }
     }
 }
@@ -82,11 +87,17 @@ impl std::fmt::Debug for SparseOptions {
             .field("cancel", &self.cancel)
             .field("progress", &self.progress.is_some())
             .field("clock", &self.clock.is_some())
+            .field("max_surface_bricks", &self.max_surface_bricks)
             .finish()
     }
 }
 
 impl SparseOptions {
+    /// Whether `bricks` surface bricks are more than the budget allows.
+    pub(crate) fn over_budget(&self, bricks: usize) -> bool {
+        self.max_surface_bricks.is_some_and(|max| bricks > max)
+    }
+
     /// The caller's clock reading, or 0 without a clock.
     pub(crate) fn now(&self) -> f64 {
         now(self.clock.as_ref())
@@ -129,6 +140,9 @@ pub struct MeshStats {
     pub assemble_s: f64,
     /// Features the grid thins or misses, over all leaf bricks ([`super::thin`]).
     pub thin: super::ThinCounts,
+    /// The surface bricks were more than [`SparseOptions::max_surface_bricks`]: nothing was
+    /// meshed (the mesh is empty; `surface_bricks` says how many there were).
+    pub over_budget: bool,
 }
 
 /// The reading of `clock`, or 0 without one.

@@ -62,6 +62,10 @@ pub fn mesh_sparse_into<E: Evaluator>(
     let t1 = opts.now();
     stats.octree_s = t1 - t0;
     stats.surface_bricks = leaves.len();
+    if opts.over_budget(leaves.len()) {
+        stats.over_budget = true;
+        return Ok(stats);
+    }
     let done = std::sync::atomic::AtomicUsize::new(0);
     let total = leaves.len();
     let mut outputs: Vec<brick::BrickOutput> = leaves

@@ -19,6 +19,19 @@ pub enum PipelineError {
     /// The grid cannot be made.
     #[error(transparent)]
     Grid(#[from] GridError),
+    /// The mesh would need more memory than the budget ([`super::MeshOptions::max_memory`]).
+    #[error(
+        "meshing needs about {} MiB ({bricks} surface bricks at about {} KiB each), above the memory limit of {} MiB; lower --resolution or raise --max-memory",
+        .predicted >> 20, super::BYTES_PER_BRICK >> 10, .limit >> 20
+    )]
+    OverMemory {
+        /// Leaf bricks the surface crosses at this resolution.
+        bricks: usize,
+        /// Predicted peak memory in bytes.
+        predicted: u64,
+        /// The budget in bytes.
+        limit: u64,
+    },
     /// The caller cancelled the run.
     #[error(transparent)]
     Cancelled(#[from] Cancelled),

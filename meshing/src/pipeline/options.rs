@@ -59,6 +59,9 @@ pub struct MeshOptions {
     pub refine: RefineOptions,
     /// Octree brick size, cancellation and progress.
     pub sparse: SparseOptions,
+    /// Most memory the mesh and its report may be predicted to need, in bytes (from the
+    /// surface bricks, before meshing; refinement stops below it). None: no limit.
+    pub max_memory: Option<u64>,
 }
 
 impl Default for MeshOptions {
@@ -77,6 +80,7 @@ impl MeshOptions {
             tolerance: None,
             refine: RefineOptions::default(),
             sparse: SparseOptions::default(),
+            max_memory: None,
         }
     }
 
@@ -107,6 +111,12 @@ impl MeshOptions {
     /// Without refinement: one run at the requested grid, thin features only reported.
     pub fn no_refinement(mut self) -> Self {
         self.refine.max_factor = 1;
+        self
+    }
+
+    /// Refused (or refinement stopped) when the mesh is predicted to need more than `bytes`.
+    pub fn max_memory(mut self, bytes: Option<u64>) -> Self {
+        self.max_memory = bytes;
         self
     }
 
