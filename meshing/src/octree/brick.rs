@@ -169,12 +169,21 @@ impl<E: Evaluator> BoxSamples<E> {
         let seconds = now(self.clock.as_ref()) - start;
         let slots = &mut self.zero_slots;
         self.lone.clear();
-        for (i, v) in self.values.iter_mut().enumerate() {
-            *v = settle(self.x[i], self.y[i], self.z[i], *v, |p| {
-                program.zero_side(p, slots)
-            });
-            if *v == LONE_ZERO {
-                self.lone.push(i);
+        // `settle` in two passes: noise snapped over the whole box without branches, then only
+        // the (rare) zeros signed one by one.
+        let mut zeros = 0u8;
+        snap_noise_all(&self.x, &self.y, &self.z, &mut self.values, &mut zeros);
+        if zeros != 0 {
+            for (i, v) in self.values.iter_mut().enumerate() {
+                if *v != 0.0 {
+                    continue;
+                }
+                *v = settle(self.x[i], self.y[i], self.z[i], *v, |p| {
+                    program.zero_side(p, slots)
+                });
+                if *v == LONE_ZERO {
+                    self.lone.push(i);
+                }
             }
         }
         if !self.lone.is_empty() {
@@ -341,5 +350,18 @@ pub(crate) fn process<E: Evaluator>(
         samples: s.samples.values.len() as u64,
         evaluation_s: s.evaluation_s,
         thin: s.samples.thin,
+    }
+}
+
+solidkit_kernel::wide_loop! {
+    /// [`snap_noise`] of every value in place; `zeros` nonzero when one became (or was) zero.
+    fn snap_noise_all(x: &[f32], y: &[f32], z: &[f32], values: &mut [f32], zeros: &mut u8) {
+        let mut any = 0u8;
+        for (((v, &x), &y), &z) in values.iter_mut().zip(x).zip(y).zip(z) {
+            let s = snap_noise(x, y, z, *v);
+            any |= u8::from(s == 0.0);
+            *v = s;
+        }
+        *zeros = any;
     }
 }
