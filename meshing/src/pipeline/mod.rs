@@ -119,7 +119,10 @@ impl Prepared {
             return Err(PipelineError::OverMemory {
                 bricks,
                 predicted: bricks as u64 * BYTES_PER_BRICK,
-                limit: o.max_memory.unwrap_or(0),
+                // The budget as given, or as the brick limit a caller set on `sparse` directly.
+                limit: o.max_memory.unwrap_or_else(|| {
+                    o.sparse.max_surface_bricks.unwrap_or(0) as u64 * BYTES_PER_BRICK
+                }),
             });
         }
         Ok(Meshed {
