@@ -10,6 +10,7 @@ use super::hull::{convex_hull, convex_hull_2d, convex_hull_within};
 use super::import::{Imported, import, string_arg};
 use super::offset::{Offset, offset};
 use super::parser::{Stmt, Tree, Value};
+use super::resize::resize;
 use super::surface::{self, surface};
 use glam::{DVec2, DVec3};
 use solidkit_kernel::Solid;
@@ -21,7 +22,7 @@ use std::sync::Arc;
 
 /// A statement's geometry.
 #[derive(Debug, Clone)]
-enum Geom {
+pub(super) enum Geom {
     /// Nothing (an empty group, a zero-size primitive).
     Empty,
     /// A 3D solid.
@@ -46,14 +47,14 @@ const OPERAND_HULL_CELLS: f64 = 0.5;
 
 /// The conversion's state: how round primitives are built, where imported files come from and
 /// the warnings so far.
-struct Ctx<'a> {
+pub(super) struct Ctx<'a> {
     facets: Facets,
     files: &'a dyn MeshResolver,
     warnings: Vec<Warning>,
 }
 
 impl Ctx<'_> {
-    fn warn(&mut self, stmt: &Stmt, message: impl Into<String>) {
+    pub(super) fn warn(&mut self, stmt: &Stmt, message: impl Into<String>) {
         self.warnings.push(Warning {
             pos: stmt.pos,
             message: message.into(),
@@ -441,6 +442,10 @@ fn node(
                 }
             }
         }
+        "resize" => {
+            let geom = group(stmt, children, Op2::Union, ctx)?;
+            resize(stmt, geom, faceted, ctx)
+        }
         "offset" => {
             let how = if stmt.arg("r", None).is_some() {
                 Offset::Round {
@@ -468,7 +473,7 @@ fn node(
 }
 
 /// Replays a 2D program in 3D: each leaf swept by `make`.
-fn sweep<E: std::fmt::Display>(
+pub(super) fn sweep<E: std::fmt::Display>(
     stmt: &Stmt,
     flat: &Flat,
     faceted: bool,
@@ -718,7 +723,7 @@ fn geometry_points(stmt: &Stmt, geom: &Geom) -> Result<Vec<DVec3>, CsgError> {
     if let Some(points) = flat_points(geom) {
         return Ok(points);
     }
-    let points = meshed_points(stmt, geom)?;
+    let points = meshed_points(stmt, geom, OPERAND_RESOLUTION)?;
     if points.is_empty() {
         return Ok(points);
     }
@@ -770,9 +775,13 @@ fn geometry_points(stmt: &Stmt, geom: &Geom) -> Result<Vec<DVec3>, CsgError> {
     })
 }
 
-/// The vertices of a marching-cubes mesh of `geom` (2D regions extruded to a unit slab and
-/// flattened).
-fn meshed_points(stmt: &Stmt, geom: &Geom) -> Result<Vec<DVec3>, CsgError> {
+/// The vertices of a marching-cubes mesh of `geom` with `resolution` cells along the longest
+/// side (2D regions extruded to a unit slab and flattened).
+pub(super) fn meshed_points(
+    stmt: &Stmt,
+    geom: &Geom,
+    resolution: usize,
+) -> Result<Vec<DVec3>, CsgError> {
     let (solid, flatten) = match geom {
         Geom::Empty => return Ok(Vec::new()),
         Geom::Solid(s) => (s.clone(), false),
@@ -788,7 +797,7 @@ fn meshed_points(stmt: &Stmt, geom: &Geom) -> Result<Vec<DVec3>, CsgError> {
     if bounds.is_empty() {
         return Ok(Vec::new());
     }
-    let spec = GridSpec::for_bounds(&bounds, OPERAND_RESOLUTION)
+    let spec = GridSpec::for_bounds(&bounds, resolution)
         .map_err(|e| stmt.error(format!("meshing an operand: {e}")))?;
     let (mesh, _) = mesh_sparse(&solid.compile(), spec, &SparseOptions::default())
         .map_err(|e| stmt.error(format!("meshing an operand: {e}")))?;

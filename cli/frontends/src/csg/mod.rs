@@ -1,7 +1,8 @@
 //! OpenSCAD `.csg` import: the flattened tree OpenSCAD writes with `openscad -o model.csg
 //! model.scad` (`group`, `union`, `difference`, `intersection`, `multmatrix`, `sphere`, `cube`,
 //! `cylinder`, `polyhedron`, `circle`, `square`, `polygon`, `linear_extrude`, `rotate_extrude`,
-//! `color`, `render`, `hull`, `minkowski`, `import`, `surface`, `offset`) to a [`Solid`].
+//! `color`, `render`, `hull`, `minkowski`, `import`, `surface`, `offset`, `resize`) to a
+//! [`Solid`].
 //!
 //! Pipeline: `lexer` (tokens with line/column) → `parser` (an arena of statements, explicit
 //! stacks, so any nesting depth is safe) → `convert` (post-order over a work list).
@@ -29,11 +30,13 @@
 //! drawings as 2D regions (`import.rs`, `dxf.rs`), `surface` reads `.dat` height maps
 //! (`surface.rs`), both relative to the `.csg` file's folder under the confinement rules of
 //! `solidkit_kernel::files` (`--allow-path` widens them); `offset` is exact where the result is a
-//! union of leaves or one convex leaf (`offset.rs`). Unsupported constructs (`text`,
-//! `projection`, `resize`, `surface` of a PNG, `offset` that would need polygon clipping, unknown
-//! modules) are errors naming the construct and its line.
+//! union of leaves or one convex leaf (`offset.rs`). `resize` scales the children's own bounding
+//! box (exact from the tree where it can be, else from a fine mesh; `resize.rs`, `bounds.rs`).
+//! Unsupported constructs (`text`, `projection`, `surface` of a PNG, `offset` that would need
+//! polygon clipping, unknown modules) are errors naming the construct and its line.
 
 mod args;
+mod bounds;
 mod convert;
 mod dxf;
 mod error;
@@ -44,12 +47,15 @@ mod import;
 mod lexer;
 mod offset;
 mod parser;
+mod resize;
 mod surface;
 
 #[cfg(test)]
 mod fuzz;
 #[cfg(test)]
 mod tests;
+#[cfg(test)]
+mod tests_resize;
 
 pub use error::{CsgError, Pos, Warning};
 

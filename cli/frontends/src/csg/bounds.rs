@@ -1,0 +1,138 @@
+//! The bounding box of a solid as OpenSCAD measures it for `resize()`: the box of the geometry
+//! itself, not a conservative bound. [`tight_bbox`] derives it from the tree where every node
+//! keeps it exact (primitives, polyhedra, unions, transforms); otherwise `None`, and the caller
+//! meshes the solid and takes the mesh's box.
+
+use glam::{DAffine3, DVec3};
+use solidkit_kernel::primitive::{MeshSource, Primitive};
+use solidkit_kernel::{Aabb, NodeKind, Solid};
+
+/// What a subtree's exact box is known from.
+#[derive(Debug, Clone)]
+enum Bound {
+    /// Points whose convex hull is the hull of the solid: any affine image keeps the box exact.
+    Points(Vec<DVec3>),
+    /// An exact box, which stays exact only under maps that keep the axes (scaled signed
+    /// permutations).
+    Box(Aabb),
+    /// Not known exactly.
+    Unknown,
+}
+
+impl Bound {
+    fn aabb(&self) -> Option<Aabb> {
+        match self {
+            Bound::Points(p) => Some(points_box(p)),
+            Bound::Box(b) => Some(*b),
+            Bound::Unknown => None,
+        }
+    }
+}
+
+/// The box of `points` (empty for none).
+fn points_box(points: &[DVec3]) -> Aabb {
+    points
+        .iter()
+        .fold(Aabb::empty(), |b, p| b.union(&Aabb::new(*p, *p)))
+}
+
+/// Whether the linear part of `m` maps each axis onto an axis.
+fn keeps_axes(m: &DAffine3) -> bool {
+    let cols = [m.matrix3.x_axis, m.matrix3.y_axis, m.matrix3.z_axis];
+    cols.iter()
+        .all(|c| c.to_array().iter().filter(|v| **v != 0.0).count() <= 1)
+}
+
+/// The exact bound of a primitive, where the kernel's box is exact.
+fn primitive_bound(p: &Primitive) -> Bound {
+    use solidkit_kernel::primitive::Shape;
+    match p {
+        Primitive::Cuboid(_) => {
+            let b = p.bbox();
+            Bound::Points(
+                (0..8)
+                    .map(|i| {
+                        DVec3::new(
+                            if i & 1 == 0 { b.min.x } else { b.max.x },
+                            if i & 2 == 0 { b.min.y } else { b.max.y },
+                            if i & 4 == 0 { b.min.z } else { b.max.z },
+                        )
+                    })
+                    .collect(),
+            )
+        }
+        Primitive::Sphere(_) | Primitive::Cylinder(_) | Primitive::Cone(_) => Bound::Box(p.bbox()),
+        Primitive::Extrude(e) if e.twist() == 0.0 => Bound::Box(p.bbox()),
+        Primitive::Mesh(m) => match m.source() {
+            MeshSource::Faces { vertices, faces } => Bound::Points(
+                faces
+                    .iter()
+                    .flatten()
+                    .filter_map(|&k| vertices.get(k as usize).copied())
+                    .collect(),
+            ),
+            _ => Bound::Box(p.bbox()),
+        },
+        _ => Bound::Unknown,
+    }
+}
+
+/// The exact box of `solid`, when the tree tells it; `None` when only its geometry can (a
+/// difference, an intersection, a rotated round primitive, …).
+pub fn tight_bbox(solid: &Solid) -> Option<Aabb> {
+    solid
+        .fold(|s, c: &[Bound]| match s.kind() {
+            NodeKind::Primitive(p) => primitive_bound(p),
+            NodeKind::Union => {
+                if c.iter().all(|b| matches!(b, Bound::Points(_))) {
+                    Bound::Points(
+                        c.iter()
+                            .flat_map(|b| match b {
+                                Bound::Points(p) => p.clone(),
+                                _ => Vec::new(),
+                            })
+                            .collect(),
+                    )
+                } else {
+                    c.iter()
+                        .map(Bound::aabb)
+                        .try_fold(Aabb::empty(), |a, b| b.map(|b| a.union(&b)))
+                        .map_or(Bound::Unknown, Bound::Box)
+                }
+            }
+            NodeKind::Transform(t) => match c.first() {
+                Some(Bound::Points(p)) => {
+                    Bound::Points(p.iter().map(|q| t.forward.transform_point3(*q)).collect())
+                }
+                Some(Bound::Box(b)) if keeps_axes(&t.forward) => {
+                    Bound::Box(b.transformed(&t.forward))
+                }
+                _ => Bound::Unknown,
+            },
+            _ => Bound::Unknown,
+        })
+        .aabb()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn primitives_unions_and_axis_maps_are_exact() {
+        let s = Solid::union_all(vec![
+            Solid::sphere(1.0),
+            Solid::cuboid(DVec3::new(2.0, 4.0, 6.0)).translate(DVec3::new(5.0, 0.0, 0.0)),
+        ]);
+        let b = tight_bbox(&s).unwrap();
+        assert_eq!(b.min, DVec3::new(-1.0, -2.0, -3.0));
+        assert_eq!(b.max, DVec3::new(6.0, 2.0, 3.0));
+        // A rotated box stays exact (its corners), a rotated sphere does not.
+        let r = Solid::cuboid(DVec3::ONE).rotate(DVec3::Z, 45.0);
+        let b = tight_bbox(&r).unwrap();
+        assert!((b.max.x - 0.5f64.sqrt()).abs() < 1e-12);
+        assert!(tight_bbox(&Solid::sphere(1.0).rotate(DVec3::Z, 45.0)).is_none());
+        let d = Solid::difference_all(Solid::sphere(1.0), vec![Solid::sphere(0.5)]);
+        assert!(tight_bbox(&d).is_none());
+    }
+}
