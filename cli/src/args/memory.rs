@@ -1,4 +1,5 @@
-//! `--max-memory`: sizes with units, and the default budget (half of the machine's memory).
+//! `--max-memory`: sizes with units (the default budget is
+//! `solidkit_meshing::pipeline::limits::default_max_memory`).
 
 /// Parses a size in bytes: a whole number, or a decimal number with K, M, G or T (powers of
 /// 1024; a trailing `B` or `iB` is allowed), from 1 MiB to 1 PiB.
@@ -28,34 +29,6 @@ pub fn parse_memory(s: &str) -> Result<u64, String> {
             "'{s}' is not a size from 1M to 1024T (bytes, or a number with K, M, G or T)"
         )),
     }
-}
-
-/// Half of this machine's memory (`MemTotal` of `/proc/meminfo`, 8 GiB where it cannot be read),
-/// and at most half of this process's address-space limit (`ulimit -v`, from
-/// `/proc/self/limits`): threads' stacks and allocator arenas reserve address space beyond
-/// what is used, and running out of it aborts.
-pub fn default_max_memory() -> u64 {
-    let total = std::fs::read_to_string("/proc/meminfo")
-        .ok()
-        .and_then(|text| {
-            text.lines()
-                .find_map(|l| l.strip_prefix("MemTotal:"))
-                .and_then(|v| v.trim().trim_end_matches("kB").trim().parse::<u64>().ok())
-        })
-        .map_or(8 << 30, |kib| kib.saturating_mul(1024));
-    let address_space = std::fs::read_to_string("/proc/self/limits")
-        .ok()
-        .and_then(|text| {
-            let line = text.lines().find(|l| l.starts_with("Max address space"))?;
-            // "Max address space  <soft>  <hard>  bytes": the soft limit, unless unlimited.
-            line["Max address space".len()..]
-                .split_whitespace()
-                .next()?
-                .parse::<u64>()
-                .ok()
-        })
-        .unwrap_or(u64::MAX);
-    total.min(address_space) / 2
 }
 
 #[cfg(test)]

@@ -5,8 +5,8 @@ mod memory;
 mod render;
 
 pub use r#gen::GenArgs;
-pub use memory::default_max_memory;
 pub use render::{RenderArgs, parse_size, parse_view};
+pub use solidkit_meshing::pipeline::limits::default_max_memory;
 
 use clap::{Parser, Subcommand, ValueEnum};
 use std::path::PathBuf;
@@ -398,8 +398,7 @@ pub(crate) fn parse_bounds(s: &str) -> Result<[f64; 6], String> {
     Ok(out)
 }
 
-/// The largest grid resolution accepted: a sphere at 2048 already takes about 4 GB.
-pub const MAX_RESOLUTION: usize = 2048;
+pub use solidkit_meshing::pipeline::limits::MAX_RESOLUTION;
 
 /// The most area-weighted samples `compare` takes per mesh (each costs a distance query and
 /// about 50 bytes).

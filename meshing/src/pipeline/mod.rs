@@ -19,6 +19,7 @@
 //! ```
 
 mod error;
+pub mod limits;
 mod options;
 pub mod warnings;
 

@@ -9,7 +9,8 @@
 //! sampling) and [`broken`] (meshes with known defects). [`generate`] builds a suite's solids;
 //! [`record::SolidRecord`] measures a solid as its file stores it and states the errors;
 //! [`manifest::Manifest`] is the `manifest.json` written beside the files (schema in
-//! `docs/gen.md`).
+//! `docs/gen.md`), [`write_suite`] writes a suite into a folder and [`Manifest::failures`]
+//! lists what contradicts its stated truth.
 //!
 //! Everything is deterministic: the same suite and options give the same meshes, trees and
 //! manifest, bit for bit, whatever the number of threads (solids are built in parallel, each on
@@ -25,13 +26,16 @@ pub mod random;
 mod random_tree;
 pub mod record;
 pub mod sampling;
+mod selfcheck;
 pub mod smooth;
 pub mod sponge;
 pub mod truth;
+mod write;
 
 pub use manifest::Manifest;
 pub use record::SolidRecord;
 pub use truth::{Quantity, Truth, TruthMethod};
+pub use write::{WriteSuiteError, write_suite};
 
 use crate::IndexedMesh;
 use solidkit_kernel::Solid;

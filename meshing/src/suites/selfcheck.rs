@@ -1,39 +1,19 @@
-//! The summary `gen` prints and the self-checks that decide its exit code: stated topology and
-//! volume tolerance met, no self-intersections outside the `broken` suite, broken meshes
-//! reporting exactly the defects put in.
+//! The self-checks of a generated suite: stated topology and volume tolerance met, no
+//! self-intersections outside the `broken` suite, broken meshes reporting exactly the defects
+//! put in. `solidkit gen` exits 1 and the Python package's `gen` raises when any fails.
 
-use solidkit_meshing::suites::Manifest;
-use std::fmt::Write;
+use super::Manifest;
 
-/// One line per solid: triangles, shells, genus (measured / true), volume error.
-pub fn summary(m: &Manifest) -> String {
-    let mut s = String::new();
-    let _ = writeln!(
-        s,
-        "{:<24} {:>9} {:>7} {:>13} {:>12}",
-        "solid", "triangles", "shells", "genus", "volume err"
-    );
-    for r in &m.solids {
-        let genus = |g: Option<i64>| g.map_or("-".to_owned(), |g| g.to_string());
-        let err = r
-            .error
-            .volume_relative
-            .map_or("-".to_owned(), |e| format!("{e:+.2e}"));
-        let _ = writeln!(
-            s,
-            "{:<24} {:>9} {:>7} {:>13} {:>12}",
-            r.name,
-            r.mesh.faces,
-            r.mesh.shells,
-            format!("{} / {}", genus(r.mesh.genus), genus(r.truth.genus)),
-            err
-        );
+impl Manifest {
+    /// Every contradiction between a solid's measured values and what the manifest states, one
+    /// line each (empty when the suite checks out).
+    pub fn failures(&self) -> Vec<String> {
+        failures(self)
     }
-    s
 }
 
-/// Every contradiction between a solid's measured values and what the manifest states.
-pub fn failures(m: &Manifest) -> Vec<String> {
+/// See [`Manifest::failures`].
+fn failures(m: &Manifest) -> Vec<String> {
     let mut out = Vec::new();
     for r in &m.solids {
         if r.error.topology_matches == Some(false) {

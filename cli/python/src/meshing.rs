@@ -1,0 +1,136 @@
+//! `Solid.mesh`: the library's meshing pipeline with the command line's defaults (memory budget,
+//! refinement, resolution range), interruptible, its warnings passed to Python's `warnings`.
+
+use crate::mesh::PyMesh;
+use crate::run::{ProgressSlot, interruptible};
+use crate::solid::PySolid;
+use glam::DVec3;
+use pyo3::exceptions::PyValueError;
+use pyo3::prelude::*;
+use solidkit_kernel::Aabb;
+use solidkit_meshing::octree::{CancelToken, Progress};
+use solidkit_meshing::pipeline::limits::{MAX_RESOLUTION, default_max_memory};
+use solidkit_meshing::pipeline::{Domain, MeshOptions, Method, PipelineError, Prepared};
+use solidkit_meshing::refine::RefineOptions;
+use std::sync::Arc;
+
+/// The keyword arguments of `Solid.mesh`.
+pub struct MeshArgs<'a, 'py> {
+    /// Cells along the longest side.
+    pub resolution: usize,
+    /// `"mc"` or `"dc"`.
+    pub method: &'a str,
+    /// Dual contouring's simplification tolerance.
+    pub tolerance: Option<f64>,
+    /// Clipping bounds.
+    pub bounds: Option<([f64; 3], [f64; 3])>,
+    /// Most refinement factor (1: none).
+    pub refine: usize,
+    /// Memory budget in bytes (default: half the machine's memory).
+    pub max_memory: Option<u64>,
+    /// Worker threads (default: all cores).
+    pub threads: Option<usize>,
+    /// `progress(stage, done, total)`.
+    pub progress: Option<Bound<'py, PyAny>>,
+}
+
+/// Issues every line of `warnings` through Python's `warnings.warn`.
+pub fn warn_all(py: Python<'_>, warnings: &[String]) -> PyResult<()> {
+    if warnings.is_empty() {
+        return Ok(());
+    }
+    let warn = py.import("warnings")?.getattr("warn")?;
+    for w in warnings {
+        warn.call1((
+            w.as_str(),
+            py.get_type::<pyo3::exceptions::PyUserWarning>(),
+            2,
+        ))?;
+    }
+    Ok(())
+}
+
+/// The pipeline's options for `a`, range-checked like the command line's.
+fn options(a: &MeshArgs<'_, '_>) -> PyResult<MeshOptions> {
+    if !(1..=MAX_RESOLUTION).contains(&a.resolution) {
+        return Err(PyValueError::new_err(format!(
+            "resolution must be 1 to {MAX_RESOLUTION}, got {}",
+            a.resolution
+        )));
+    }
+    if !(1..=32).contains(&a.refine) || !a.refine.is_power_of_two() {
+        return Err(PyValueError::new_err(format!(
+            "refine must be 1, 2, 4, 8, 16 or 32, got {}",
+            a.refine
+        )));
+    }
+    let method = match a.method {
+        "mc" => Method::Mc,
+        "dc" => Method::Dc,
+        other => {
+            return Err(PyValueError::new_err(format!(
+                "method must be 'mc' or 'dc', not {other:?}"
+            )));
+        }
+    };
+    if let Some(t) = a.tolerance
+        && !(t.is_finite() && t > 0.0)
+    {
+        return Err(PyValueError::new_err(format!(
+            "tolerance must be a positive number, got {t}"
+        )));
+    }
+    let domain = match a.bounds {
+        None => Domain::Solid,
+        Some((lo, hi)) => {
+            let (lo, hi) = (DVec3::from(lo), DVec3::from(hi));
+            if !(lo.is_finite() && hi.is_finite() && lo.cmplt(hi).all()) {
+                return Err(PyValueError::new_err(
+                    "bounds must be ((xmin, ymin, zmin), (xmax, ymax, zmax)) with finite min < max",
+                ));
+            }
+            Domain::Clip(Aabb::new(lo, hi))
+        }
+    };
+    let refine = RefineOptions {
+        max_factor: a.refine,
+        ..RefineOptions::default()
+    };
+    Ok(MeshOptions::new(a.resolution)
+        .method(method)
+        .domain(domain)
+        .tolerance(a.tolerance)
+        .refine(refine)
+        .max_memory(Some(a.max_memory.unwrap_or_else(default_max_memory))))
+}
+
+/// Meshes `s` as `a` asks.
+pub fn mesh(py: Python<'_>, s: &PySolid, a: MeshArgs<'_, '_>) -> PyResult<PyMesh> {
+    let solid = s.validated()?;
+    let slot = Arc::new(ProgressSlot::default());
+    let token = CancelToken::new();
+    let mut options = options(&a)?.cancel(token.clone());
+    if a.progress.is_some() {
+        let sink = Arc::clone(&slot);
+        options = options.progress(Arc::new(move |p: Progress| {
+            sink.set(p.stage, p.done, p.total)
+        }));
+    }
+    let cancel = move || token.cancel();
+    let progress = a.progress.as_ref().map(|cb| (cb, slot.as_ref()));
+    let result = interruptible(py, a.threads, progress, &cancel, || {
+        let prepared = Prepared::new(solid, &options)?;
+        let meshed = prepared.mesh()?;
+        Ok::<_, PipelineError>((prepared.warnings, meshed))
+    })?;
+    let (mut warnings, meshed) = result.map_err(|e| match e {
+        PipelineError::Unbounded => crate::errors::meshing(
+            "the solid is unbounded; pass bounds=((xmin, ymin, zmin), (xmax, ymax, zmax))",
+        ),
+        e => crate::errors::meshing(e),
+    })?;
+    warnings.splice(0..0, s.warnings.iter().cloned());
+    warnings.extend(meshed.warnings.iter().cloned());
+    warn_all(py, &warnings[s.warnings.len()..])?;
+    PyMesh::from_meshed(py, meshed, warnings, a.resolution, a.method)
+}
