@@ -10,12 +10,13 @@ use super::hull::{convex_hull, convex_hull_2d, convex_hull_within};
 use super::import::{Imported, import, string_arg};
 use super::offset::{Offset, offset};
 use super::parser::{Stmt, Tree, Value};
+use super::projection::projection;
 use super::resize::resize;
 use super::surface::{self, surface};
 use glam::{DVec2, DVec3};
-use solidkit_kernel::Solid;
 use solidkit_kernel::polyhedra::Polyhedron;
 use solidkit_kernel::primitive::{Extrude, MeshResolver, Primitive, Revolve};
+use solidkit_kernel::{IndexedMesh, Solid};
 use solidkit_meshing::marching_cubes::GridSpec;
 use solidkit_meshing::octree::{SparseOptions, mesh_sparse};
 use std::sync::Arc;
@@ -442,6 +443,29 @@ fn node(
                 }
             }
         }
+        "projection" => {
+            let mut solids = Vec::new();
+            let mut ignored = false;
+            for c in children {
+                match c {
+                    Geom::Solid(s) => solids.push(s),
+                    Geom::Flat(_) => ignored = true,
+                    Geom::Empty => {}
+                }
+            }
+            if ignored {
+                ctx.warn(stmt, "ignoring 2D child object for projection");
+            }
+            if solids.is_empty() {
+                return Ok(Geom::Empty);
+            }
+            let s = if solids.len() == 1 {
+                solids.remove(0)
+            } else {
+                Solid::union_all(solids)
+            };
+            Ok(projection(stmt, &s)?.map_or(Geom::Empty, Geom::Flat))
+        }
         "resize" => {
             let geom = group(stmt, children, Op2::Union, ctx)?;
             resize(stmt, geom, faceted, ctx)
@@ -792,22 +816,32 @@ pub(super) fn meshed_points(
             true,
         ),
     };
-    solid.validate().map_err(|e| stmt.error(e.to_string()))?;
-    let bounds = solid.bbox();
-    if bounds.is_empty() {
-        return Ok(Vec::new());
-    }
-    let spec = GridSpec::for_bounds(&bounds, resolution)
-        .map_err(|e| stmt.error(format!("meshing an operand: {e}")))?;
-    let (mesh, _) = mesh_sparse(&solid.compile(), spec, &SparseOptions::default())
-        .map_err(|e| stmt.error(format!("meshing an operand: {e}")))?;
-    let mut points = mesh.positions;
+    let mut points = mesh_of(stmt, &solid, resolution)?.positions;
     if flatten {
         for p in &mut points {
             p.z = 0.0;
         }
     }
     Ok(points)
+}
+
+/// A marching-cubes mesh of `solid` with `resolution` cells along the longest side of its box
+/// (empty for an empty solid); errors located at `stmt`.
+pub(super) fn mesh_of(
+    stmt: &Stmt,
+    solid: &Solid,
+    resolution: usize,
+) -> Result<IndexedMesh, CsgError> {
+    solid.validate().map_err(|e| stmt.error(e.to_string()))?;
+    let bounds = solid.bbox();
+    if bounds.is_empty() {
+        return Ok(IndexedMesh::default());
+    }
+    let spec = GridSpec::for_bounds(&bounds, resolution)
+        .map_err(|e| stmt.error(format!("meshing an operand: {e}")))?;
+    let (mesh, _) = mesh_sparse(&solid.compile(), spec, &SparseOptions::default())
+        .map_err(|e| stmt.error(format!("meshing an operand: {e}")))?;
+    Ok(mesh)
 }
 
 /// An operand of `hull()` / `minkowski()`: its geometry, points, and index among the kept

@@ -1,8 +1,8 @@
 //! OpenSCAD `.csg` import: the flattened tree OpenSCAD writes with `openscad -o model.csg
 //! model.scad` (`group`, `union`, `difference`, `intersection`, `multmatrix`, `sphere`, `cube`,
 //! `cylinder`, `polyhedron`, `circle`, `square`, `polygon`, `linear_extrude`, `rotate_extrude`,
-//! `color`, `render`, `hull`, `minkowski`, `import`, `surface`, `offset`, `resize`) to a
-//! [`Solid`].
+//! `color`, `render`, `hull`, `minkowski`, `import`, `surface`, `offset`, `resize`,
+//! `projection`) to a [`Solid`].
 //!
 //! Pipeline: `lexer` (tokens with line/column) → `parser` (an arena of statements, explicit
 //! stacks, so any nesting depth is safe) → `convert` (post-order over a work list).
@@ -32,11 +32,14 @@
 //! `solidkit_kernel::files` (`--allow-path` widens them); `offset` is exact where the result is a
 //! union of leaves or one convex leaf (`offset.rs`). `resize` scales the children's own bounding
 //! box (exact from the tree where it can be, else from a fine mesh; `resize.rs`, `bounds.rs`).
-//! Unsupported constructs (`text`, `projection`, `surface` of a PNG, `offset` that would need
+//! `projection` samples the slice (the field at z = 0) or the shadow (the projected triangles of a
+//! mesh of the children) on a 2D grid and contours it into polygons (`projection.rs`,
+//! `contour.rs`). Unsupported constructs (`text`, `surface` of a PNG, `offset` that would need
 //! polygon clipping, unknown modules) are errors naming the construct and its line.
 
 mod args;
 mod bounds;
+mod contour;
 mod convert;
 mod dxf;
 mod error;
@@ -47,6 +50,7 @@ mod import;
 mod lexer;
 mod offset;
 mod parser;
+mod projection;
 mod resize;
 mod surface;
 
@@ -54,6 +58,8 @@ mod surface;
 mod fuzz;
 #[cfg(test)]
 mod tests;
+#[cfg(test)]
+mod tests_projection;
 #[cfg(test)]
 mod tests_resize;
 
