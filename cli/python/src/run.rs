@@ -6,14 +6,18 @@
 
 use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
-use std::sync::{Condvar, Mutex};
+use std::sync::{Arc, Condvar, Mutex};
 use std::time::Duration;
 
 /// How often the calling thread checks for signals and progress.
 const POLL: Duration = Duration::from_millis(20);
 
-/// The most threads a call may ask for, as a multiple of the cores.
-const MAX_THREADS_PER_CORE: usize = 8;
+/// The most threads a call may ask for: this many per core, and at least [`MIN_MAX_THREADS`]
+/// (the command line's `--threads` rule).
+const MAX_THREADS_PER_CORE: usize = 16;
+
+/// The thread limit on machines with few cores.
+const MIN_MAX_THREADS: usize = 64;
 
 /// The latest progress report of the work: stage, done, total; `None` once read.
 #[derive(Default)]
@@ -35,20 +39,48 @@ impl ProgressSlot {
     }
 }
 
-/// A rayon pool of `threads` threads, checked against the machine (None: rayon's default).
-pub fn pool(threads: Option<usize>) -> PyResult<rayon::ThreadPool> {
+/// Pools by thread count, built once (building one costs a thread start per worker).
+static POOLS: Mutex<Vec<(usize, Arc<rayon::ThreadPool>)>> = Mutex::new(Vec::new());
+
+/// A rayon pool of `threads` threads, checked against the machine (None: rayon's global pool,
+/// all cores), built on first use and kept.
+pub fn pool(threads: Option<usize>) -> PyResult<Option<Arc<rayon::ThreadPool>>> {
+    let Some(n) = threads else {
+        return Ok(None);
+    };
     let cores = std::thread::available_parallelism().map_or(1, |n| n.get());
-    let mut b = rayon::ThreadPoolBuilder::new();
-    if let Some(n) = threads {
-        let max = cores * MAX_THREADS_PER_CORE;
-        if n == 0 || n > max {
-            return Err(PyValueError::new_err(format!(
-                "threads must be 1 to {max} ({MAX_THREADS_PER_CORE} per core), got {n}"
-            )));
-        }
-        b = b.num_threads(n);
+    let max = (cores * MAX_THREADS_PER_CORE).max(MIN_MAX_THREADS);
+    if n == 0 || n > max {
+        return Err(PyValueError::new_err(format!(
+            "threads must be 1 to {max}, got {n}"
+        )));
     }
-    b.build().map_err(crate::errors::other)
+    let mut pools = POOLS.lock().unwrap_or_else(|e| e.into_inner());
+    if let Some((_, p)) = pools.iter().find(|(k, _)| *k == n) {
+        return Ok(Some(Arc::clone(p)));
+    }
+    let p = Arc::new(
+        rayon::ThreadPoolBuilder::new()
+            .num_threads(n)
+            .build()
+            .map_err(crate::errors::other)?,
+    );
+    pools.push((n, Arc::clone(&p)));
+    Ok(Some(p))
+}
+
+/// Runs `work` in the pool of `threads` with the GIL released, on the calling thread (for short
+/// calls that need no interruption).
+pub fn detached<T: Send>(
+    py: Python<'_>,
+    threads: Option<usize>,
+    work: impl FnOnce() -> T + Send,
+) -> PyResult<T> {
+    let pool = pool(threads)?;
+    Ok(py.detach(|| match pool {
+        Some(p) => p.install(work),
+        None => work(),
+    }))
 }
 
 /// Runs `work` in a pool of `threads` threads with the GIL released, polling for signals and
@@ -66,7 +98,10 @@ pub fn interruptible<T: Send>(
     std::thread::scope(|scope| {
         let handle = scope.spawn(|| {
             let _guard = Finished(&done);
-            pool.install(work)
+            match pool {
+                Some(p) => p.install(work),
+                None => work(),
+            }
         });
         let mut raised: Option<PyErr> = None;
         loop {

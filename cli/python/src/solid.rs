@@ -353,17 +353,27 @@ impl PySolid {
     /// Values of the signed field at the points of an N × 3 array (negative inside): float32 from
     /// the meshers' single-precision batch evaluator, or float64 with `double=True`. With
     /// `gradients=True`, returns `(values, gradients)` in double precision (N and N × 3).
-    /// Runs on `threads` threads (default: all cores) with the GIL released.
-    #[pyo3(signature = (points, *, gradients = false, double = false, threads = None))]
+    /// Runs on `threads` threads (default: all cores) with the GIL released; `out`, a float32
+    /// array of N values, receives the single-precision values instead of a new array.
+    #[pyo3(signature = (points, *, gradients = false, double = false, threads = None, out = None))]
     fn eval<'py>(
         &self,
         py: Python<'py>,
-        points: numpy::PyArrayLike2<'py, f64, numpy::AllowTypeChange>,
+        points: &Bound<'py, PyAny>,
         gradients: bool,
         double: bool,
         threads: Option<usize>,
+        out: Option<Bound<'py, numpy::PyArray1<f32>>>,
     ) -> PyResult<Bound<'py, PyAny>> {
-        crate::field::eval(py, self.validated()?, points, gradients, double, threads)
+        crate::field::eval(
+            py,
+            self.validated()?,
+            points,
+            gradients,
+            double,
+            threads,
+            out,
+        )
     }
 
     /// Meshes the solid: marching cubes (`method="mc"`) or dual contouring (`"dc"`, optionally
