@@ -226,8 +226,11 @@ fn bad_imports_and_offsets_exit_2_with_a_located_line() {
         ".svg files are not read",
     );
     assert_located_error(
-        &[("model.csg", "surface(file = \"x.png\");")],
-        "PNG height maps are not read",
+        &[
+            ("x.png", "not a PNG"),
+            ("model.csg", "cube(1);\nsurface(file = \"x.png\");"),
+        ],
+        "model.csg:2:1: surface: x.png: ",
     );
     assert_located_error(
         &[

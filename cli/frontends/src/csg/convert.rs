@@ -12,7 +12,7 @@ use super::offset::{Offset, offset};
 use super::parser::{Stmt, Tree, Value};
 use super::projection::projection;
 use super::resize::resize;
-use super::surface::{self, surface};
+use super::surface::surface;
 use glam::{DVec2, DVec3};
 use solidkit_kernel::polyhedra::Polyhedron;
 use solidkit_kernel::primitive::{Extrude, MeshResolver, Primitive, Revolve};
@@ -430,7 +430,6 @@ fn node(
             let path = string_arg(stmt, "file", Some(0))
                 .filter(|p| !p.is_empty())
                 .ok_or_else(|| stmt.error("'file': expected a file name"))?;
-            surface::check_path(stmt, path)?;
             let bytes = ctx
                 .files
                 .read_file(path)

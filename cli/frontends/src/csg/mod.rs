@@ -27,14 +27,14 @@
 //! Extrusions are exact sweeps of the profile (OpenSCAD's `slices` is ignored; `scale = 0` is a
 //! cone to the apex), and 2D Booleans under an extrusion are replayed as 3D Booleans of the swept
 //! leaves. `import` reads mesh files (`.stl`, `.off`, `.obj`, `.ply`) as solids and `.dxf`
-//! drawings as 2D regions (`import.rs`, `dxf.rs`), `surface` reads `.dat` height maps
+//! drawings as 2D regions (`import.rs`, `dxf.rs`), `surface` reads `.dat` and PNG height maps
 //! (`surface.rs`), both relative to the `.csg` file's folder under the confinement rules of
 //! `solidkit_kernel::files` (`--allow-path` widens them); `offset` is exact where the result is a
 //! union of leaves or one convex leaf (`offset.rs`). `resize` scales the children's own bounding
 //! box (exact from the tree where it can be, else from a fine mesh; `resize.rs`, `bounds.rs`).
 //! `projection` samples the slice (the field at z = 0) or the shadow (the projected triangles of a
 //! mesh of the children) on a 2D grid and contours it into polygons (`projection.rs`,
-//! `contour.rs`). Unsupported constructs (`text`, `surface` of a PNG, `offset` that would need
+//! `contour.rs`). Unsupported constructs (`text`, `offset` that would need
 //! polygon clipping, unknown modules) are errors naming the construct and its line.
 
 mod args;
@@ -62,6 +62,8 @@ mod tests;
 mod tests_projection;
 #[cfg(test)]
 mod tests_resize;
+#[cfg(test)]
+mod tests_surface_png;
 
 pub use error::{CsgError, Pos, Warning};
 

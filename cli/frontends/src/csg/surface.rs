@@ -3,11 +3,18 @@
 //! are skipped; a missing value in a short row is 0); row `i`, column `j` is the height at
 //! `(j, i)`. Each grid cell is four triangles around its centre at the mean of its corners; walls
 //! go down to a flat bottom at `min(0, min(height) − 1)`. `center` moves the grid's middle to the
-//! origin. PNG height maps (`surface("x.png")`) are not read: an error says so.
+//! origin.
+//!
+//! A `.png` image (any colour type) is read as OpenSCAD reads it: pixel row `r` from the top is
+//! the height row `y = rows − 1 − r`, each pixel's grey level `L` (its luminance, 0..255; see
+//! `decode_png_luminance`) is the height `100 / 255 · L`, or `100 / 255 · (1 − L)` with
+//! `invert = true` (OpenSCAD 2021.01's formula, so inverted heights are negative), and the mesh
+//! is built as for `.dat`.
 
 use super::error::CsgError;
 use super::parser::Stmt;
 use glam::DVec3;
+use solidkit_kernel::primitive::heightfield::{HeightFieldError, decode_png_luminance};
 
 /// A polyhedron: vertices and faces counter-clockwise seen from outside.
 pub type Mesh = (Vec<DVec3>, Vec<Vec<u32>>);
@@ -96,20 +103,44 @@ pub fn mesh(rows: &[Vec<f64>], center: bool) -> Mesh {
     (v, f)
 }
 
-/// Refuses the files `surface` does not read (PNG), before anything is read.
-pub fn check_path(stmt: &Stmt, path: &str) -> Result<(), CsgError> {
-    if path.to_ascii_lowercase().ends_with(".png") {
-        return Err(stmt.error(format!(
-            "'{path}': PNG height maps are not read by surface() (use a .dat file)"
-        )));
+/// The heights of a PNG image, row by row from the smallest y, as OpenSCAD derives them; `None`
+/// when the image has fewer than 2 × 2 pixels.
+pub fn png_heights(bytes: &[u8], invert: bool) -> Result<Option<Vec<Vec<f64>>>, String> {
+    let grid = match decode_png_luminance(bytes) {
+        Ok(g) => g,
+        Err(HeightFieldError::GridTooSmall { .. }) => return Ok(None),
+        Err(e) => return Err(e.to_string()),
+    };
+    if grid.nx() * grid.ny() > MAX_HEIGHTS {
+        return Err(format!(
+            "{} × {} pixels: more than {MAX_HEIGHTS} heights",
+            grid.nx(),
+            grid.ny()
+        ));
     }
-    Ok(())
+    let level = |v: f64| {
+        let l = v * 255.0;
+        100.0 / 255.0 * if invert { 1.0 - l } else { l }
+    };
+    Ok(Some(
+        grid.rows()
+            .map(|row| row.iter().map(|&v| level(v)).collect())
+            .collect(),
+    ))
 }
 
-/// The mesh of a `surface` statement from the bytes of its `.dat` file.
+/// The mesh of a `surface` statement from the bytes of its `.dat` or `.png` file.
 pub fn surface(stmt: &Stmt, path: &str, bytes: &[u8]) -> Result<Option<Mesh>, CsgError> {
-    let text = String::from_utf8_lossy(bytes);
-    let rows = parse_dat(&text).map_err(|e| stmt.error(format!("{path}: {e}")))?;
+    let rows = if path.to_ascii_lowercase().ends_with(".png") {
+        let invert = stmt.flag("invert", None, false)?;
+        match png_heights(bytes, invert).map_err(|e| stmt.error(format!("{path}: {e}")))? {
+            Some(rows) => rows,
+            None => return Ok(None),
+        }
+    } else {
+        let text = String::from_utf8_lossy(bytes);
+        parse_dat(&text).map_err(|e| stmt.error(format!("{path}: {e}")))?
+    };
     if rows.len() < 2 || rows[0].len() < 2 {
         return Ok(None);
     }

@@ -22,7 +22,9 @@ mod source;
 
 pub use error::HeightFieldError;
 pub use grid::HeightGrid;
-pub use png_map::{MAX_PNG_DECODER_BYTES, MAX_PNG_PIXELS, MAX_PNG_SIDE, decode_png, load_png};
+pub use png_map::{
+    MAX_PNG_DECODER_BYTES, MAX_PNG_PIXELS, MAX_PNG_SIDE, decode_png, decode_png_luminance, load_png,
+};
 pub use source::{HeightSource, Interpolation};
 
 use super::{Cuboid, PrimitiveError, Shape};

@@ -20,13 +20,16 @@ pub const MAX_PNG_PIXELS: u64 = 1 << 24;
 /// allowed image at 16 bits per pixel, expanded.
 pub const MAX_PNG_DECODER_BYTES: usize = 3 * (1 << 25);
 
-/// Decodes a grayscale PNG into heights in `[0, 1]`.
-pub fn decode_png(bytes: &[u8]) -> Result<HeightGrid, HeightFieldError> {
+/// Decodes the first frame of a PNG under the budgets, with the decoder's `transformations`.
+fn read_frame(
+    bytes: &[u8],
+    transformations: png::Transformations,
+) -> Result<(png::OutputInfo, Vec<u8>), HeightFieldError> {
     let limits = png::Limits {
         bytes: MAX_PNG_DECODER_BYTES,
     };
     let mut decoder = png::Decoder::new_with_limits(std::io::Cursor::new(bytes), limits);
-    decoder.set_transformations(png::Transformations::EXPAND);
+    decoder.set_transformations(transformations);
     let mut reader = decoder.read_info()?;
     let (width, height) = (reader.info().width, reader.info().height);
     if width > MAX_PNG_SIDE
@@ -41,6 +44,12 @@ pub fn decode_png(bytes: &[u8]) -> Result<HeightGrid, HeightFieldError> {
         .ok_or(HeightFieldError::ImageTooLarge { width, height })?;
     let mut buf = vec![0; size];
     let info = reader.next_frame(&mut buf)?;
+    Ok((info, buf))
+}
+
+/// Decodes a grayscale PNG into heights in `[0, 1]`.
+pub fn decode_png(bytes: &[u8]) -> Result<HeightGrid, HeightFieldError> {
+    let (info, buf) = read_frame(bytes, png::Transformations::EXPAND)?;
     let bits = info.bit_depth as u8;
     if info.color_type != png::ColorType::Grayscale || !(bits == 8 || bits == 16) {
         return Err(HeightFieldError::NotGrayscale {
@@ -62,6 +71,43 @@ pub fn decode_png(bytes: &[u8]) -> Result<HeightGrid, HeightFieldError> {
                     .map(|b| u16::from_be_bytes([b[0], b[1]]) as f64 / 65535.0),
             );
         }
+    }
+    HeightGrid::new(w, h, values)
+}
+
+/// Decodes a PNG of any colour type into grey levels in `[0, 1]` as OpenSCAD's `surface()` reads
+/// images: 16-bit samples keep their high byte, palettes are expanded, alpha is ignored, and the
+/// grey level is the luminance `(0.2126 R + 0.7152 G + 0.0722 B) / 255` (a grey pixel keeps its
+/// value). Rows as in [`decode_png`] (the bottom image row first).
+pub fn decode_png_luminance(bytes: &[u8]) -> Result<HeightGrid, HeightFieldError> {
+    let (info, buf) = read_frame(
+        bytes,
+        png::Transformations::EXPAND | png::Transformations::STRIP_16,
+    )?;
+    let channels = match info.color_type {
+        png::ColorType::Grayscale => 1,
+        png::ColorType::GrayscaleAlpha => 2,
+        png::ColorType::Rgb => 3,
+        png::ColorType::Rgba => 4,
+        png::ColorType::Indexed => {
+            return Err(HeightFieldError::NotGrayscale {
+                color: info.color_type,
+                bits: info.bit_depth as u8,
+            });
+        }
+    };
+    let (w, h) = (info.width as usize, info.height as usize);
+    let mut values = Vec::with_capacity(w * h);
+    for r in (0..h).rev() {
+        let line = &buf[r * info.line_size..r * info.line_size + channels * w];
+        values.extend(line.chunks_exact(channels).map(|p| {
+            let luma = if channels < 3 {
+                f64::from(p[0])
+            } else {
+                0.2126 * f64::from(p[0]) + 0.7152 * f64::from(p[1]) + 0.0722 * f64::from(p[2])
+            };
+            luma / 255.0
+        }));
     }
     HeightGrid::new(w, h, values)
 }

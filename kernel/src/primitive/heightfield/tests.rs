@@ -261,6 +261,49 @@ fn png_height_maps_decode_in_8_and_16_bits() {
 }
 
 #[test]
+fn png_luminance_reads_every_colour_type_as_openscad_does() {
+    // RGB: the luminance weights; the top row maps to the largest y.
+    let rgb = encode(
+        2,
+        2,
+        ::png::BitDepth::Eight,
+        ::png::ColorType::Rgb,
+        &[255, 0, 0, 0, 255, 0, 0, 0, 255, 10, 20, 30],
+    );
+    let g = decode_png_luminance(&rgb).unwrap();
+    assert!((g.get(0, 1) - 0.2126).abs() < 1e-12);
+    assert!((g.get(1, 1) - 0.7152).abs() < 1e-12);
+    assert!((g.get(0, 0) - 0.0722).abs() < 1e-12);
+    assert!((g.get(1, 0) - 18.596 / 255.0).abs() < 1e-12);
+    // 16-bit grey keeps the high byte; grey is its own value.
+    let words: Vec<u8> = [0x01ffu16, 0, 0x8007, 0xffff]
+        .iter()
+        .flat_map(|w| w.to_be_bytes())
+        .collect();
+    let g = decode_png_luminance(&encode(
+        2,
+        2,
+        ::png::BitDepth::Sixteen,
+        ::png::ColorType::Grayscale,
+        &words,
+    ))
+    .unwrap();
+    assert_eq!(g.get(0, 1), 1.0 / 255.0);
+    assert_eq!(g.get(0, 0), 128.0 / 255.0);
+    assert_eq!(g.get(1, 0), 1.0);
+    // Alpha is ignored.
+    let ga = encode(
+        2,
+        2,
+        ::png::BitDepth::Eight,
+        ::png::ColorType::GrayscaleAlpha,
+        &[51, 0, 51, 255, 51, 7, 51, 9],
+    );
+    let g = decode_png_luminance(&ga).unwrap();
+    assert!(g.values().iter().all(|&v| v == 0.2));
+}
+
+#[test]
 fn png_file_makes_a_height_field() {
     let dir = std::env::temp_dir().join(format!("solidkit-hf-{}", std::process::id()));
     std::fs::create_dir_all(&dir).unwrap();
