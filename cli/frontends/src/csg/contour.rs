@@ -5,7 +5,7 @@
 //! The samples on the grid's border count as outside, so every loop closes. A cell whose two
 //! diagonal corners are inside keeps them apart (each run of inside corners is cut off by its own
 //! segment), so loops never touch. Segments keep the inside on their left: outlines run
-//! counter-clockwise and holes clockwise, which is how holes find their outline.
+//! counter-clockwise and holes clockwise. [`region`] groups loops by nesting depth.
 
 use super::flat::{Flat, Leaf2, Op2};
 use glam::DVec2;
@@ -209,13 +209,11 @@ fn contains(l: &[DVec2], p: DVec2) -> bool {
     inside
 }
 
-/// Loops as a region: each counter-clockwise outline with the clockwise loops whose smallest
-/// enclosing outline it is, one polygon leaf per outline, joined by a union. `None` when there
-/// are no outlines.
+/// Non-crossing loops (of any orientation) as a region by the even-odd rule: each loop inside an
+/// even number of others is an outline, with the loops directly inside it as its holes; one
+/// polygon leaf per outline, joined by a union. `None` when there are no loops.
 pub fn region(loops: Vec<Vec<DVec2>>) -> Option<Flat> {
-    let (outlines, holes): (Vec<Vec<DVec2>>, Vec<Vec<DVec2>>) =
-        loops.into_iter().partition(|l| area(l) > 0.0);
-    let boxes: Vec<(DVec2, DVec2)> = outlines
+    let boxes: Vec<(DVec2, DVec2)> = loops
         .iter()
         .map(|l| {
             l.iter().fold(
@@ -224,18 +222,37 @@ pub fn region(loops: Vec<Vec<DVec2>>) -> Option<Flat> {
             )
         })
         .collect();
-    let mut parts: Vec<Vec<Vec<DVec2>>> = outlines.iter().map(|l| vec![l.clone()]).collect();
-    for hole in holes {
-        let p = hole[0];
-        let owner = (0..outlines.len())
-            .filter(|&k| {
-                let (lo, hi) = boxes[k];
-                p.cmpge(lo).all() && p.cmple(hi).all() && contains(&outlines[k], p)
-            })
-            .min_by(|&a, &b| area(&outlines[a]).total_cmp(&area(&outlines[b])));
-        // A hole always lies in an outline; one that does not (rounding) is dropped.
-        if let Some(k) = owner {
-            parts[k].push(hole);
+    let areas: Vec<f64> = loops.iter().map(|l| area(l).abs()).collect();
+    // The loops containing each loop (tested at its first corner), and the smallest of them.
+    let mut depth = vec![0usize; loops.len()];
+    let mut parent: Vec<Option<usize>> = vec![None; loops.len()];
+    for (k, l) in loops.iter().enumerate() {
+        let p = l[0];
+        for (m, other) in loops.iter().enumerate() {
+            let (lo, hi) = boxes[m];
+            if m == k || !(p.cmpge(lo).all() && p.cmple(hi).all()) || !contains(other, p) {
+                continue;
+            }
+            depth[k] += 1;
+            if parent[k].is_none_or(|q| areas[m] < areas[q]) {
+                parent[k] = Some(m);
+            }
+        }
+    }
+    let mut part_of = vec![usize::MAX; loops.len()];
+    let mut parts: Vec<Vec<Vec<DVec2>>> = Vec::new();
+    for k in 0..loops.len() {
+        if depth[k].is_multiple_of(2) {
+            part_of[k] = parts.len();
+            parts.push(vec![loops[k].clone()]);
+        }
+    }
+    for k in 0..loops.len() {
+        if !depth[k].is_multiple_of(2)
+            && let Some(q) = parent[k]
+            && part_of[q] != usize::MAX
+        {
+            parts[part_of[q]].push(loops[k].clone());
         }
     }
     if parts.is_empty() {

@@ -13,6 +13,7 @@ use super::parser::{Stmt, Tree, Value};
 use super::projection::projection;
 use super::resize::resize;
 use super::surface::surface;
+use super::text::text;
 use glam::{DVec2, DVec3};
 use solidkit_kernel::polyhedra::Polyhedron;
 use solidkit_kernel::primitive::{Extrude, MeshResolver, Primitive, Revolve};
@@ -442,6 +443,7 @@ fn node(
                 }
             }
         }
+        "text" => leaf(text(stmt)?.map_or(Geom::Empty, Geom::Flat)),
         "projection" => {
             let mut solids = Vec::new();
             let mut ignored = false;

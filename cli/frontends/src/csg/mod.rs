@@ -2,7 +2,7 @@
 //! model.scad` (`group`, `union`, `difference`, `intersection`, `multmatrix`, `sphere`, `cube`,
 //! `cylinder`, `polyhedron`, `circle`, `square`, `polygon`, `linear_extrude`, `rotate_extrude`,
 //! `color`, `render`, `hull`, `minkowski`, `import`, `surface`, `offset`, `resize`,
-//! `projection`) to a [`Solid`].
+//! `projection`, `text`) to a [`Solid`].
 //!
 //! Pipeline: `lexer` (tokens with line/column) → `parser` (an arena of statements, explicit
 //! stacks, so any nesting depth is safe) → `convert` (post-order over a work list).
@@ -34,8 +34,10 @@
 //! box (exact from the tree where it can be, else from a fine mesh; `resize.rs`, `bounds.rs`).
 //! `projection` samples the slice (the field at z = 0) or the shadow (the projected triangles of a
 //! mesh of the children) on a 2D grid and contours it into polygons (`projection.rs`,
-//! `contour.rs`). Unsupported constructs (`text`, `offset` that would need
-//! polygon clipping, unknown modules) are errors naming the construct and its line.
+//! `contour.rs`). `text` is drawn by the installed `openscad` program into a DXF read as
+//! polygons (`text.rs`; an error naming the missing program where it is not installed).
+//! Unsupported constructs (`offset` that would need polygon clipping, unknown modules) are
+//! errors naming the construct and its line.
 
 mod args;
 mod bounds;
@@ -53,6 +55,7 @@ mod parser;
 mod projection;
 mod resize;
 mod surface;
+mod text;
 
 #[cfg(test)]
 mod fuzz;
@@ -64,6 +67,8 @@ mod tests_projection;
 mod tests_resize;
 #[cfg(test)]
 mod tests_surface_png;
+#[cfg(test)]
+mod tests_text;
 
 pub use error::{CsgError, Pos, Warning};
 

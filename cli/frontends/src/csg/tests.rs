@@ -81,16 +81,19 @@ fn csg_equals_json_tree() {
 
 #[test]
 fn unsupported_construct_is_located() {
-    let text = "group() {\n\tcube(size = [1, 1, 1]);\n\n\ttext(text = \"a\");\n}\n";
+    let text = "group() {\n\tcube(size = [1, 1, 1]);\n\n\tfrobnicate(text = \"a\");\n}\n";
     let e = import(text, Facets::Exact).unwrap_err();
     assert_eq!(
         e,
         CsgError::Unsupported {
             pos: Pos { line: 4, col: 2 },
-            name: "text".into()
+            name: "frobnicate".into()
         }
     );
-    assert_eq!(e.to_string(), "4:2: unsupported OpenSCAD construct 'text'");
+    assert_eq!(
+        e.to_string(),
+        "4:2: unsupported OpenSCAD construct 'frobnicate'"
+    );
 }
 
 fn warned(text: &str, facets: Facets) -> (Solid, Vec<String>) {
