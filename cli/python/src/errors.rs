@@ -45,9 +45,22 @@ pub fn load(e: impl std::fmt::Display) -> PyErr {
     LoadError::new_err(e.to_string())
 }
 
-/// A [`MeshingError`] with `e`'s message.
+/// A [`MeshingError`] with `e`'s message, in Python's words.
 pub fn meshing(e: impl std::fmt::Display) -> PyErr {
-    MeshingError::new_err(e.to_string())
+    MeshingError::new_err(pythonic(&e.to_string()))
+}
+
+/// A pipeline message with the command line's option names replaced by the keyword arguments
+/// of `Solid.mesh`.
+pub fn pythonic(message: &str) -> String {
+    message
+        .replace("--resolution", "resolution")
+        .replace("--max-memory", "max_memory")
+        .replace("--refine-budget", "the refinement budget")
+        .replace("--refine", "refine")
+        .replace("--bounds", "bounds")
+        .replace("--method dc", "method='dc'")
+        .replace("--tolerance", "tolerance")
 }
 
 /// A [`MeshIOError`] with `e`'s message.

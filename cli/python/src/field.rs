@@ -39,7 +39,9 @@ pub fn eval<'py>(
     {
         let p32 = p32.readonly();
         check_shape(p32.shape())?;
-        if let Ok(flat) = p32.as_slice() {
+        if p32.is_c_contiguous()
+            && let Ok(flat) = p32.as_slice()
+        {
             let program = py.detach(|| solid.compile());
             return single_out(py, &program, flat, |v| v, threads, out);
         }
@@ -50,9 +52,10 @@ pub fn eval<'py>(
     let n = shape[0];
     // A C-contiguous copy only when the caller's array is not one already.
     let owned;
+    // (`as_slice` also takes Fortran order, which is not x, y, z per point.)
     let flat: &[f64] = match points.as_slice() {
-        Ok(s) => s,
-        Err(_) => {
+        Ok(s) if points.is_c_contiguous() => s,
+        _ => {
             owned = points.as_array().iter().copied().collect::<Vec<f64>>();
             &owned
         }

@@ -149,7 +149,11 @@ pub fn report_dict<'py>(
     let report = interruptible(py, threads, None, &|| {}, || {
         TopologyReport::with_options(mesh, &options)
     })?;
-    warnings.extend(warnings::not_closed_manifold(&report));
+    // A mesher's output must be closed and manifold: say so when it is not. (A mesh from
+    // elsewhere is only reported on, as `solidkit check` does.)
+    if !extra.as_object().is_none_or(|m| m.is_empty()) {
+        warnings.extend(warnings::not_closed_manifold(&report));
+    }
     let mut v = serde_json::to_value(&report).map_err(errors::other)?;
     if let (Value::Object(map), Value::Object(more)) = (&mut v, extra) {
         for (k, x) in more {

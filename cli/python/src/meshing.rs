@@ -131,6 +131,10 @@ pub fn mesh(py: Python<'_>, s: &PySolid, a: MeshArgs<'_, '_>) -> PyResult<PyMesh
     })?;
     warnings.splice(0..0, s.warnings.iter().cloned());
     warnings.extend(meshed.warnings.iter().cloned());
+    let warnings: Vec<String> = warnings
+        .iter()
+        .map(|w| crate::errors::pythonic(w))
+        .collect();
     warn_all(py, &warnings[s.warnings.len()..])?;
     PyMesh::from_meshed(py, meshed, warnings, a.resolution, a.method)
 }
