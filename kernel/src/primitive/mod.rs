@@ -61,6 +61,15 @@ pub trait Shape {
     fn interval(&self, b: &Aabb) -> Interval;
     /// A box containing the solid (possibly infinite).
     fn bbox(&self) -> Aabb;
+
+    /// A box containing `{p : f(p) ≤ level}` for `level ≥ 0` (offsets, shells and blends of the
+    /// primitive reach there). The default, the box grown by `level`, holds for fields that are
+    /// at least the distance to the box outside it (exact distances, and fields that are the
+    /// maximum of such a distance and something else); distance bounds that fall below it
+    /// (ellipsoids, Platonic solids, blobs) override it.
+    fn bbox_at(&self, level: f64) -> Aabb {
+        self.bbox().expanded(level)
+    }
     /// Checks the parameters; the message names the bad parameter.
     fn validate(&self) -> Result<(), PrimitiveError>;
 
@@ -292,6 +301,9 @@ impl Shape for Primitive {
     }
     fn bbox(&self) -> Aabb {
         dispatch!(self, s => s.bbox())
+    }
+    fn bbox_at(&self, level: f64) -> Aabb {
+        dispatch!(self, s => s.bbox_at(level))
     }
     fn validate(&self) -> Result<(), PrimitiveError> {
         dispatch!(self, s => s.validate())

@@ -40,7 +40,44 @@ impl Solid {
 
     /// A box containing the solid (infinite when the solid is unbounded, empty when it is empty).
     pub fn bbox(&self) -> Aabb {
-        self.fold(|s, c: &[Aabb]| node_bbox(s.kind(), c))
+        self.bbox_at(0.0)
+    }
+
+    /// A box containing `{p : f(p) ≤ level}` for the solid's field `f` and `level ≥ 0` (level 0:
+    /// the solid). Offsets, shells and blends look at their operands' fields above zero, and
+    /// fields that are only distance bounds (ellipsoids, Platonic solids, blobs) reach further
+    /// there than their box grown by the level, so the level travels down the tree (issue 15:
+    /// an offset ellipsoid left its box and was cut open by the grid). Explicit work list.
+    pub fn bbox_at(&self, level: f64) -> Aabb {
+        let mut frames: Vec<(&Solid, f64, usize)> = vec![(self, level.max(0.0), 0)];
+        let mut results: Vec<Aabb> = Vec::new();
+        while let Some(top) = frames.last_mut() {
+            let (solid, level, next) = *top;
+            if let Some(child) = solid.children().get(next) {
+                top.2 += 1;
+                frames.push((
+                    child,
+                    child_level(solid.kind(), solid.children().len(), level),
+                    0,
+                ));
+            } else {
+                frames.pop();
+                let start = results.len() - solid.children().len();
+                let b = match solid.kind() {
+                    NodeKind::Primitive(p) => p.bbox_at(level),
+                    NodeKind::SmoothUnion { .. } => results[start..]
+                        .iter()
+                        .fold(Aabb::empty(), |a, b| a.union(b)),
+                    NodeKind::Offset { .. } | NodeKind::Shell { .. } => {
+                        results.get(start).copied().unwrap_or(Aabb::empty())
+                    }
+                    kind => node_bbox(kind, &results[start..]),
+                };
+                results.truncate(start);
+                results.push(b);
+            }
+        }
+        results.pop().expect("the root leaves one result")
     }
 
     /// Checks every node's parameters and arity. The error names the node by its path from the
@@ -154,6 +191,24 @@ impl PartialEq for Solid {
             pairs.extend(a.children().iter().zip(b.children()));
         }
         true
+    }
+}
+
+/// The level at which a node of kind `kind` with `n` children, asked for `{f ≤ level}`, asks
+/// its children: the node's field is at most `level` only where the children's are at most this.
+fn child_level(kind: &NodeKind, n: usize, level: f64) -> f64 {
+    match kind {
+        // σ·f(A⁻¹(p − t)) ≤ ℓ ⇔ f ≤ ℓ/σ.
+        NodeKind::Transform(t) => level / t.sigma,
+        // Each quadratic smooth minimum lies at most r/4 below the plain minimum, and an n-ary
+        // blend nests at most n − 1 of them; r covers up to five operands, as the boxes of
+        // exact distance fields always did.
+        NodeKind::SmoothUnion { radius } => level + radius * ((n.max(2) - 1) as f64 / 4.0).max(1.0),
+        NodeKind::Offset { distance } => (level + distance).max(0.0),
+        // |f| − t/2 ≤ ℓ ⇔ −(ℓ + t/2) ≤ f ≤ ℓ + t/2.
+        NodeKind::Shell { thickness } => level + thickness * 0.5,
+        // Minima, maxima and smooth maxima (never below the plain maximum) keep the level.
+        _ => level,
     }
 }
 

@@ -51,14 +51,7 @@ impl Blob {
                 problem: "must be below the sum of the positive strengths (the solid is empty)",
             });
         }
-        let mut bbox = Aabb::empty();
-        for b in balls.iter().filter(|b| b.strength > 0.0) {
-            let r = ((total / threshold).ln() / b.sharpness).sqrt();
-            bbox = bbox.union(&Aabb::new(
-                b.center - DVec3::splat(r),
-                b.center + DVec3::splat(r),
-            ));
-        }
+        let bbox = density_box(&balls, threshold);
         let lipschitz = balls.iter().map(Ball::max_slope).sum();
         Ok(Self {
             balls,
@@ -84,6 +77,21 @@ impl Blob {
     }
 }
 
+/// A box holding every point where the density reaches `t > 0`: with `S` the sum of the
+/// positive strengths, only within `√(ln(S/t) / a_k)` of a positive ball (empty when `t ≥ S`).
+fn density_box(balls: &[Ball], t: f64) -> Aabb {
+    let total: f64 = balls.iter().map(|b| b.strength.max(0.0)).sum();
+    let mut bbox = Aabb::empty();
+    for b in balls.iter().filter(|b| b.strength > 0.0) {
+        let r = ((total / t).ln() / b.sharpness).sqrt();
+        bbox = bbox.union(&Aabb::new(
+            b.center - DVec3::splat(r),
+            b.center + DVec3::splat(r),
+        ));
+    }
+    bbox
+}
+
 impl Shape for Blob {
     fn value(&self, p: DVec3) -> f64 {
         self.threshold - self.density(p)
@@ -103,6 +111,17 @@ impl Shape for Blob {
     }
     fn bbox(&self) -> Aabb {
         self.bbox
+    }
+    fn bbox_at(&self, level: f64) -> Aabb {
+        // T − density ≤ ℓ ⇔ density ≥ T − ℓ: everywhere once ℓ reaches T (the density tends
+        // to 0 far away), else the balls' reach at the lower threshold.
+        if level <= 0.0 {
+            self.bbox
+        } else if level >= self.threshold {
+            Aabb::infinite()
+        } else {
+            density_box(&self.balls, self.threshold - level)
+        }
     }
     fn validate(&self) -> Result<(), PrimitiveError> {
         // Checked once by `Blob::new`; the fields are private.

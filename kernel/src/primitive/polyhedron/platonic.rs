@@ -88,6 +88,12 @@ impl Shape for Platonic {
         Aabb::centered(half * (1.0 + 1e-12))
     }
 
+    fn bbox_at(&self, level: f64) -> Aabb {
+        // max nᵢ·p − r ≤ ℓ is the solid scaled by (r + ℓ)/r: its vertices move out by more than ℓ.
+        let half = unit_platonic(self.kind).half_extents * self.circumradius();
+        Aabb::centered(half * (1.0 + 1e-12) * (1.0 + level / self.inradius()))
+    }
+
     fn validate(&self) -> Result<(), PrimitiveError> {
         positive(self.size.parameter(), self.size.value())
     }

@@ -34,6 +34,11 @@ impl Shape for Ellipsoid {
     fn bbox(&self) -> Aabb {
         Aabb::centered(self.radii)
     }
+    fn bbox_at(&self, level: f64) -> Aabb {
+        // m·(|p / r| − 1) ≤ ℓ ⇔ |p / r| ≤ 1 + ℓ/m: the ellipsoid scaled by 1 + ℓ/m, which grows
+        // the longer radii by more than ℓ.
+        Aabb::centered(self.radii * (1.0 + level / self.radii.min_element()))
+    }
     fn validate(&self) -> Result<(), PrimitiveError> {
         positive("radii", self.radii.x)?;
         positive("radii", self.radii.y)?;
