@@ -1,7 +1,11 @@
 //! One term of a blobby object, `b · exp(−a · |p − c|²)` (lecture notes 002): its value, gradient,
 //! exact range over a box, steepest slope and reach.
 
-use super::super::{PrimitiveError, positive};
+use super::super::{MAX_MAGNITUDE, OUT_OF_RANGE, PrimitiveError, faithful, positive};
+
+/// The problem with a strength outside the faithful range.
+const STRENGTH_RANGE: &str = "expected a magnitude between 1e-30 and 1e30 (beyond that range \
+                              single-precision evaluation is not faithful)";
 use crate::{Aabb, Interval};
 use glam::DVec3;
 
@@ -71,6 +75,20 @@ impl Ball {
             return Err(PrimitiveError {
                 parameter: "strength",
                 problem: "expected a finite nonzero number",
+            });
+        }
+        // Single precision evaluates the terms: a strength of 1e300 was ∞ there (an open mesh,
+        // issue 15), and a centre beyond the faithful range cancels every sample.
+        if !faithful(self.strength) {
+            return Err(PrimitiveError {
+                parameter: "strength",
+                problem: STRENGTH_RANGE,
+            });
+        }
+        if self.center.abs().max_element() > MAX_MAGNITUDE {
+            return Err(PrimitiveError {
+                parameter: "center",
+                problem: OUT_OF_RANGE,
             });
         }
         positive("sharpness", self.sharpness)
