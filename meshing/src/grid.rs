@@ -41,9 +41,9 @@ pub enum GridError {
         /// The per-axis limit.
         limit: usize,
     },
-    /// Sample coordinates beyond the single-precision range: they would be infinite.
+    /// Sample coordinates beyond [`MAX_COORDINATE`]: their squares overflow single precision.
     #[error(
-        "the meshing bounds reach {bound:e}, beyond single precision (±3.4e38), where the samples are taken"
+        "the meshing bounds reach {bound:e}, beyond single precision (coordinates up to ±5e18: their squares must stay below 3.4e38), where the samples are taken"
     )]
     BeyondSinglePrecision {
         /// The coordinate of largest magnitude.
@@ -72,6 +72,12 @@ pub enum GridError {
 /// The least number of single-precision noise bands ([`NOISE`]` · (1 + |coordinate|)`) a cell
 /// must span: the snapped values then move the surface by at most half a cell.
 pub const MIN_CELL_BANDS: u32 = 2;
+
+/// Largest coordinate magnitude of a sample: primitives square their coordinates in single
+/// precision (largest finite `f32` about 3.4·10³⁸), so beyond about 1.8·10¹⁹ samples inside a
+/// sphere evaluated as outside (∞) and meshes came out open (issue 15); the margin covers a sum
+/// of three squares and a translation.
+pub const MAX_COORDINATE: f64 = 5e18;
 
 /// Most cells along one axis (vertex and triangle keys pack sample indices in 20 bits).
 pub const MAX_CELLS_PER_AXIS: usize = (1 << 20) - 2;
@@ -132,7 +138,7 @@ impl GridSpec {
         let bound = (0..3)
             .map(|a| spec.origin[a].abs().max(far[a].abs()))
             .fold(0.0, f64::max);
-        if bound as f32 == f32::INFINITY {
+        if !(bound <= MAX_COORDINATE) {
             return Err(GridError::BeyondSinglePrecision { bound });
         }
         let band = f64::from(NOISE) * (1.0 + bound);

@@ -20,6 +20,7 @@
 
 mod error;
 pub mod limits;
+mod net;
 mod options;
 pub mod warnings;
 
@@ -47,6 +48,9 @@ pub struct Prepared {
     program: Program,
     /// Warnings about the solid itself (open mesh operands), before any meshing.
     pub warnings: Vec<String>,
+    /// The warning that the solid reaches the grid's edge, where it is cut (see `net`); the
+    /// mesh's warnings start with it.
+    cut_warning: Option<String>,
 }
 
 impl Prepared {
@@ -76,16 +80,32 @@ impl Prepared {
         if options.tolerance.is_some() && options.method != Method::Dc {
             return Err(PipelineError::ToleranceNeedsDc);
         }
-        let spec = match grid {
-            Grid::Padded(bounds) => GridSpec::for_bounds(&bounds, options.resolution)?,
-            Grid::Covering(domain) => GridSpec::covering(&domain, options.resolution)?,
-            Grid::Given(spec) => spec,
+        let (spec, padded) = match grid {
+            Grid::Padded(bounds) => (GridSpec::for_bounds(&bounds, options.resolution)?, true),
+            Grid::Covering(domain) => (GridSpec::covering(&domain, options.resolution)?, false),
+            Grid::Given(spec) => (spec, false),
+        };
+        let program = solid.compile();
+        let mut cut_warning = None;
+        let program = if padded {
+            // A grid padded around the solid's box: cut the solid half a cell inside the grid's
+            // edge, so the mesh is closed even where the box is wrong, and say so if it was.
+            if net::reaches_edge(&program, &spec) {
+                cut_warning = Some(warnings::beyond_box(&solid.bbox()));
+            }
+            let cut = net::inner_box(&spec);
+            solid
+                .intersection(&Solid::cuboid(cut.size()).translate(cut.center()))
+                .compile()
+        } else {
+            program
         };
         Ok(Prepared {
             options: options.clone(),
             spec,
-            program: solid.compile(),
+            program,
             warnings,
+            cut_warning,
         })
     }
 
@@ -133,7 +153,12 @@ impl Prepared {
             factor: refined.factor,
             samples_total: refined.samples_total,
             lost_solid: refined.lost_solid,
-            warnings: refined.warnings,
+            warnings: self
+                .cut_warning
+                .iter()
+                .cloned()
+                .chain(refined.warnings)
+                .collect(),
             program_length: self.program.len(),
         })
     }

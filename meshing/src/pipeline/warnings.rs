@@ -41,3 +41,13 @@ pub fn not_closed_manifold(report: &TopologyReport) -> Option<String> {
         )
     })
 }
+
+/// The warning for a solid that reaches beyond its bounding box `bbox` (as the tree computes it)
+/// to the edge of the grid padded around it: the mesh is cut there, and closed by a cap half a
+/// cell inside the grid's edge.
+pub fn beyond_box(bbox: &solidkit_kernel::Aabb) -> String {
+    format!(
+        "the solid reaches beyond its bounding box [{:e}, {:e}, {:e}]..[{:e}, {:e}, {:e}] to the edge of the grid: the mesh is cut and capped there, so part of the solid may be missing",
+        bbox.min.x, bbox.min.y, bbox.min.z, bbox.max.x, bbox.max.y, bbox.max.z
+    )
+}
