@@ -4,15 +4,27 @@
 //! `--bounds`, open mesh operands), each meshed by the real binary with marching cubes or dual
 //! contouring at a small resolution.
 //!
-//! Every run must end with exit 0 or 2, or 1 with its warning that the mesh is empty (never a panic, an abort, a signal or a hang); an error
-//! ends with one `error:` line; a failed run leaves no output file and a successful one a complete
-//! file; an open or non-manifold result must carry the CLI's warning that it may be wrong, and
-//! their number is bounded (parameters beyond 1e-30..1e30 and singular transforms are refused
-//! since issue 15's second round; the known remaining classes are listed at the bound).
-//! The default run (`SOLIDKIT_FUZZ_TREES`, 2000 trees, seed `SOLIDKIT_FUZZ_SEED`) takes well under a
-//! minute on two cores; a long run is `SOLIDKIT_FUZZ_TREES=20000 cargo test --release -p solidkit
-//! --test cli_hostile_fuzz -- --nocapture`. A failing tree is printed whole, to be reduced into
-//! `fixtures/hostile/` with a test in `cli_hostile_mesh.rs`.
+//! Every run must end with exit 0 or 2, or 1 with its warning that the mesh is empty (never a
+//! panic, an abort, a signal or a hang); an error ends with one `error:` line; a failed run leaves
+//! no output file and a successful one a complete file; and every non-empty result is a closed
+//! manifold. An open or non-manifold result is a failure: the meshers are closed by construction
+//! inside the grid, the pipeline cuts the solid half a cell inside the grid's edge (with a warning
+//! where the solid's box was wrong), and grids or parameters single precision cannot evaluate are
+//! refused with exit 2.
+//!
+//! The default run ([`DEFAULT_TREES`] trees: about two minutes on two cores, part of
+//! `cargo test --workspace --release` and so of `.ci/run`) uses seed 15. The long run (issue 15's
+//! acceptance: 30 minutes, about 90 000 trees on two cores) is
+//!
+//! ```text
+//! SOLIDKIT_FUZZ_TREES=90000 SOLIDKIT_FUZZ_SEED=2026 cargo test --release -p solidkit \
+//!     --test cli_hostile_fuzz -- --nocapture
+//! ```
+//!
+//! `SOLIDKIT_FUZZ_SHOW_OPEN=1` also prints every open result as it happens. A failing tree is
+//! printed whole, to be reduced into `fixtures/hostile/` with a test in `cli_hostile_mesh.rs`.
+//! A run slower than [`SLOW`] is counted (and listed) but is not a failure; one past
+//! [`RUN_LIMIT`] is a hang.
 
 use std::io::Read;
 use std::path::Path;
@@ -23,8 +35,16 @@ use std::time::{Duration, Instant};
 
 const BIN: &str = env!("CARGO_BIN_EXE_solidkit");
 
-/// A hang: no run of a tree at these resolutions comes near it.
-const RUN_LIMIT: Duration = Duration::from_secs(20);
+/// A hang. The slowest runs seen are gyroids under bounds a million times their period, where
+/// every cell of a refined grid is searched for hidden features (about 30 s alone, 40 s beside
+/// a second worker).
+const RUN_LIMIT: Duration = Duration::from_secs(90);
+
+/// A slow run: listed in the summary.
+const SLOW: Duration = Duration::from_secs(20);
+
+/// Trees of the default run: about two minutes on two cores.
+const DEFAULT_TREES: u64 = 6000;
 
 /// SplitMix64: small, seedable, and the same everywhere.
 struct Rng(u64);
@@ -322,6 +342,7 @@ fn check_run(
     tree: &str,
     args: &[String],
     open: &AtomicUsize,
+    slow: &Mutex<Vec<String>>,
 ) -> Option<String> {
     let input = dir.join(format!("t{case}.json"));
     let output = dir.join(format!("t{case}.stl"));
@@ -360,6 +381,11 @@ fn check_run(
     };
     let (out, err) = (out.join().unwrap(), err.join().unwrap());
     let took = start.elapsed();
+    if took > SLOW && status.is_some() {
+        slow.lock()
+            .unwrap()
+            .push(format!("case {case} took {took:.1?}: {args:?} {tree}"));
+    }
     let problem = match status.map(|s| s.code()) {
         None => Some(format!("hang: killed after {took:?}")),
         Some(None) => Some("ended by a signal".to_string()),
@@ -378,19 +404,11 @@ fn check_run(
                     if std::env::var_os("SOLIDKIT_FUZZ_SHOW_OPEN").is_some() {
                         eprintln!("open mesh (case {case}): {args:?} {tree}");
                     }
-                    // A result that may be wrong must never be silent: the report has to say so.
-                    let warned = r["warnings"].as_array().is_some_and(|w| {
-                        w.iter().any(|w| {
-                            w.as_str()
-                                .is_some_and(|w| w.contains("the mesh is not a closed manifold"))
-                        })
-                    });
-                    (!warned).then(|| {
-                        format!(
-                            "exit 0 with an open or non-manifold mesh ({} boundary edges) and no warning",
-                            r["boundary_edges"]
-                        )
-                    })
+                    Some(format!(
+                        "exit 0 with an open or non-manifold mesh ({} boundary edges, {} \
+                         non-manifold edges, {} non-manifold vertices)",
+                        r["boundary_edges"], r["non_manifold_edges"], r["non_manifold_vertices"]
+                    ))
                 }
                 Some(_) => None,
             }
@@ -422,7 +440,7 @@ fn env_number(name: &str, default: u64) -> u64 {
 
 #[test]
 fn random_extreme_trees_never_panic_hang_or_leave_partial_files() {
-    let trees = env_number("SOLIDKIT_FUZZ_TREES", 2000) as usize;
+    let trees = env_number("SOLIDKIT_FUZZ_TREES", DEFAULT_TREES) as usize;
     let seed = env_number("SOLIDKIT_FUZZ_SEED", 15);
     let dir = tempfile::tempdir().unwrap();
     std::fs::write(dir.path().join("closed.off"), CLOSED_OFF).unwrap();
@@ -439,12 +457,18 @@ fn random_extreme_trees_never_panic_hang_or_leave_partial_files() {
     let next = Arc::new(AtomicUsize::new(0));
     let failures = Arc::new(Mutex::new(Vec::new()));
     let open = Arc::new(AtomicUsize::new(0));
+    let slow = Arc::new(Mutex::new(Vec::new()));
     let start = Instant::now();
     let workers = std::thread::available_parallelism().map_or(2, |n| n.get().min(4));
     let handles: Vec<_> = (0..workers)
         .map(|_| {
-            let (cases, next, failures, open) =
-                (cases.clone(), next.clone(), failures.clone(), open.clone());
+            let (cases, next, failures, open, slow) = (
+                cases.clone(),
+                next.clone(),
+                failures.clone(),
+                open.clone(),
+                slow.clone(),
+            );
             let dir = dir.path().to_path_buf();
             std::thread::spawn(move || {
                 loop {
@@ -452,7 +476,7 @@ fn random_extreme_trees_never_panic_hang_or_leave_partial_files() {
                     let Some((tree, args)) = cases.get(i) else {
                         break;
                     };
-                    if let Some(p) = check_run(&dir, i, tree, args, &open) {
+                    if let Some(p) = check_run(&dir, i, tree, args, &open, &slow) {
                         failures.lock().unwrap().push(p);
                     }
                 }
@@ -464,12 +488,19 @@ fn random_extreme_trees_never_panic_hang_or_leave_partial_files() {
     }
     let failures = failures.lock().unwrap();
     let open = open.load(Ordering::Relaxed);
+    let slow = slow.lock().unwrap();
+    let hangs = failures.iter().filter(|f| f.contains(": hang:")).count();
+    let panics = failures.iter().filter(|f| f.contains("panicked")).count();
     eprintln!(
-        "fuzz: {trees} trees (seed {seed}) in {:.1} s, {} failures, {open} open or non-manifold \
-         meshes, each with a warning (SOLIDKIT_FUZZ_SHOW_OPEN=1 lists them)",
+        "fuzz: {trees} trees (seed {seed}) in {:.1} s: {} failures ({panics} panics, {open} open \
+         or non-manifold meshes, {hangs} hangs); {} runs slower than {SLOW:?}",
         start.elapsed().as_secs_f64(),
         failures.len(),
+        slow.len(),
     );
+    for s in slow.iter() {
+        eprintln!("slow: {s}");
+    }
     assert!(failures.is_empty(), "{}", failures.join("\n"));
     // Nothing else (temporary files) may be left in the folder.
     let mut left: Vec<String> = std::fs::read_dir(dir.path())
@@ -479,12 +510,4 @@ fn random_extreme_trees_never_panic_hang_or_leave_partial_files() {
         .collect();
     left.sort();
     assert!(left.is_empty(), "files left behind: {left:?}");
-    // The known open classes (offsets and shells of bound fields leaving their boxes, blobs with
-    // extreme parameters; see issue 15) come with a warning. They were 8 in 2000 trees with the
-    // default seed when this bound was set: more means a regression, fewer a fix (lower it).
-    let limit = env_number("SOLIDKIT_FUZZ_MAX_OPEN_PER_MILLE", 6) as usize;
-    assert!(
-        open * 1000 <= limit * trees.max(1),
-        "{open} open or non-manifold meshes in {trees} trees (at most {limit} per mille expected)"
-    );
 }
