@@ -410,11 +410,17 @@ fn node(
             let Some(flat) = flat_children(stmt, children, ctx) else {
                 return Ok(Geom::Empty);
             };
-            let angle = stmt.num("angle", None, 360.0)?;
+            // As in OpenSCAD: at most a full turn either way; a negative angle sweeps clockwise
+            // (the mirror image in y of the counter-clockwise sweep).
+            let angle = stmt.num("angle", None, 360.0)?.clamp(-360.0, 360.0);
             let s = sweep(stmt, &flat, faceted, |p| {
-                Revolve::new(p, angle).map(|r| Primitive::Revolve(Arc::new(r)))
+                Revolve::new(p, angle.abs()).map(|r| Primitive::Revolve(Arc::new(r)))
             })?;
-            Ok(Geom::Solid(s))
+            Ok(Geom::Solid(if angle < 0.0 {
+                s.scale(DVec3::new(1.0, -1.0, 1.0))
+            } else {
+                s
+            }))
         }
         "import" => {
             let mut found = Vec::new();

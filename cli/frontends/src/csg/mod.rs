@@ -54,6 +54,7 @@ mod offset;
 mod parser;
 mod projection;
 mod resize;
+mod shadow;
 mod surface;
 mod text;
 

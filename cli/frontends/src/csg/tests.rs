@@ -488,3 +488,29 @@ fn huge_fn_is_an_error_and_fa_fs_are_clamped() {
         3
     );
 }
+
+/// `rotate_extrude(angle)` as in the User Manual: a negative angle sweeps clockwise (right-hand
+/// rule), beyond a full turn is a full turn.
+#[test]
+fn rotate_extrude_negative_angle_sweeps_clockwise() {
+    let (s, w) = warned(
+        "rotate_extrude(angle = -90) multmatrix([[1,0,0,5],[0,1,0,0],[0,0,1,0],[0,0,0,1]]) \
+         square(size = [2, 2]);",
+        Facets::Exact,
+    );
+    assert!(w.is_empty());
+    let (m, _) = mesh(&s, 160);
+    assert!(rel_err(signed_volume(&m), 12.0 * PI) < 0.01);
+    let b = s.bbox();
+    assert!(
+        b.max.y <= 1e-9 && b.min.y < -6.9 && b.min.x >= -1e-9,
+        "{b:?}"
+    );
+    let (s, _) = warned(
+        "rotate_extrude(angle = 400) multmatrix([[1,0,0,5],[0,1,0,0],[0,0,1,0],[0,0,0,1]]) \
+         square(size = [2, 2]);",
+        Facets::Exact,
+    );
+    let (m, _) = mesh(&s, 160);
+    assert!(rel_err(signed_volume(&m), 48.0 * PI) < 0.01);
+}

@@ -121,3 +121,17 @@ fn two_d_children_are_ignored_with_a_warning() {
     let (_, w) = solid("projection() square(1); cube(1);");
     assert_eq!(w, ["1:1: ignoring 2D child object for projection"]);
 }
+
+#[test]
+fn shadow_of_openscad_facets_uses_their_faces() {
+    // A $fn = 4 cylinder lying along y has corners at x = ±3: a 6 × 10 rectangle, from the
+    // polyhedron's own faces (no meshing), so only the grid's corner cuts differ.
+    let text = "linear_extrude(height = 1) projection() \
+                multmatrix([[1,0,0,0],[0,0,-1,0],[0,1,0,0],[0,0,0,1]]) \
+                cylinder(h = 10, r = 3, center = true, $fn = 4);";
+    let (s, _) = import_with_warnings(text, Facets::OpenScad, &NoMeshResolver).unwrap();
+    let (m, report) = mesh(&s, 160);
+    assert_eq!(report.boundary_edges, 0);
+    let v = signed_volume(&m);
+    assert!(rel_err(v, 60.0) < 0.002, "{v}");
+}
