@@ -50,6 +50,18 @@ pub enum MeshIoError {
         /// What is wrong, in a few words.
         message: String,
     },
+    /// The content of one entry of a package (a 3MF model part) is invalid at a known place.
+    #[error("{path}: entry {entry}: {location}: {message}")]
+    Entry {
+        /// The file name as given to the reader.
+        path: String,
+        /// The entry's path inside the package.
+        entry: String,
+        /// Where in the entry the problem is.
+        location: Location,
+        /// What is wrong, in a few words.
+        message: String,
+    },
     /// The content of the file is invalid, but the place could not be determined.
     #[error("{path}: {message}")]
     Invalid {
@@ -60,7 +72,7 @@ pub enum MeshIoError {
     },
     /// The file extension names no supported mesh format.
     #[error(
-        "{}: unsupported mesh format (expected .stl, .obj, .ply or .off; .3mf or .glb for output)",
+        "{}: unsupported mesh format (expected .stl, .obj, .ply, .off, .3mf or .glb)",
         .path.display()
     )]
     UnsupportedFormat {
@@ -95,10 +107,13 @@ impl MeshIoError {
         }
     }
 
-    /// The location of a [`MeshIoError::Parse`] error, `None` for the other variants.
+    /// The location of a [`MeshIoError::Parse`] or [`MeshIoError::Entry`] error, `None` for the
+    /// other variants.
     pub fn location(&self) -> Option<Location> {
         match self {
-            MeshIoError::Parse { location, .. } => Some(*location),
+            MeshIoError::Parse { location, .. } | MeshIoError::Entry { location, .. } => {
+                Some(*location)
+            }
             _ => None,
         }
     }

@@ -1,5 +1,6 @@
 //! Mesh file input and output: STL (binary and ASCII), Wavefront OBJ, PLY (ASCII and binary)
-//! and OFF, to and from [`IndexedMesh`]; 3MF and glTF binary (`.glb`) output only.
+//! and OFF, to and from [`IndexedMesh`]; 3MF and glTF binary (`.glb`) too (3MF packages may be
+//! stored or deflated; build items, components and GLB node transforms are applied).
 //!
 //! The format follows the file extension (`.stl`, `.obj`, `.ply`, `.off`, `.3mf`, `.glb`, any
 //! case). Readers
@@ -25,6 +26,8 @@ mod bytes;
 mod error;
 mod faces;
 mod glb;
+mod glb_read;
+mod gltf_json;
 mod key_hash;
 mod obj;
 mod obj_scan;
@@ -38,10 +41,16 @@ mod stl;
 mod stored;
 mod text;
 mod threemf;
+mod threemf_model;
+mod threemf_read;
+mod unzip;
 mod weld;
 mod weld_parallel;
+mod xml;
 mod zip;
 
+#[cfg(test)]
+mod container_tests;
 #[cfg(test)]
 mod polygon_mesh_tests;
 #[cfg(test)]
@@ -76,9 +85,9 @@ pub enum MeshFormat {
     Ply,
     /// Object File Format (OFF).
     Off,
-    /// 3D Manufacturing Format (zip package with the model XML); written, not read.
+    /// 3D Manufacturing Format (zip package with the model XML).
     ThreeMf,
-    /// glTF 2.0 binary (32-bit float positions, 32-bit indices); written, not read.
+    /// glTF 2.0 binary (32-bit float positions; 32-bit indices when written).
     Glb,
 }
 
@@ -159,13 +168,8 @@ pub fn read_mesh_bytes(
         MeshFormat::Obj => faces::triangles(bytes, name, obj::read_faces),
         MeshFormat::Ply => faces::triangles(bytes, name, ply::read_faces),
         MeshFormat::Off => faces::triangles(bytes, name, off::read_faces),
-        MeshFormat::ThreeMf | MeshFormat::Glb => Err(MeshIoError::invalid(
-            name,
-            format!(
-                "reading .{} is not supported (solidkit writes it; read .stl, .obj, .ply or .off)",
-                format.extension()
-            ),
-        )),
+        MeshFormat::ThreeMf => threemf_read::read(bytes, name),
+        MeshFormat::Glb => glb_read::read(bytes, name),
     }
 }
 
