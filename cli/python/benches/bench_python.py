@@ -87,7 +87,7 @@ def bench_mesh(binary, repeat):
 
 def bench_check(repeat):
     print("\n## check: about 1.8 M triangles as numpy arrays (seconds, medians)")
-    m = sk.load(REPO / "fixtures" / "bench" / "gyroid-sphere.json").mesh(resolution=200)
+    m = (sk.sphere(1) - sk.box(1.2)).mesh(resolution=360, refine=1)
     v, f = np.array(m.vertices), np.array(m.faces)
     print(f"mesh: {len(v)} vertices, {len(f)} triangles")
     rows = [("sk.check (full report)", lambda: sk.check(v, f)),

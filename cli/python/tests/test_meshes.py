@@ -143,7 +143,10 @@ def test_progress_is_reported_and_an_exception_in_it_cancels():
 
 def test_ctrl_c_stops_a_long_mesh_with_keyboard_interrupt():
     code = textwrap.dedent("""
-        import sys, time, numpy as np, solidkit as sk
+        import signal, sys, time, numpy as np, solidkit as sk
+        # A process started in the background by a shell inherits SIGINT ignored: restore
+        # Python's own handler, as in an interactive session.
+        signal.signal(signal.SIGINT, signal.default_int_handler)
         rng = np.random.default_rng(1)
         balls = [sk.sphere(0.15).translate(c) for c in rng.uniform(-2, 2, (300, 3)).tolist()]
         slow = sk.union(*balls) | (sk.gyroid(0.1) & sk.sphere(2))

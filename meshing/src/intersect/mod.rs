@@ -43,6 +43,7 @@ use crate::IndexedMesh;
 use crate::measure::MeasureError;
 use copies::Copies;
 use morton::{Box32, LEAF, LeafTree, curve_order};
+use predicates::Projection;
 use triangles::{Tri, meet_beyond_shared};
 
 /// Leaves per parallel work item.
@@ -103,11 +104,12 @@ pub fn self_intersections(
     if let Some(vertex) = bad {
         return Err(MeasureError::NonFiniteVertex { vertex });
     }
-    let tris: Vec<Option<Tri>> = ids
+    // Degenerate (exactly collinear) triangles take no part. The corners are read again below
+    // rather than kept here: a vector of every triangle's corners was the largest allocation.
+    let mut keep: Vec<bool> = ids
         .par_iter()
-        .map(|&t| Tri::new(mesh.triangle_positions(t as usize)))
+        .map(|&t| Projection::of(mesh.triangle_positions(t as usize)).is_some())
         .collect();
-    let mut keep: Vec<bool> = tris.par_iter().map(Option::is_some).collect();
     let keys: Vec<[u32; 3]> = ids
         .par_iter()
         .map(|&t| {
@@ -119,11 +121,14 @@ pub fn self_intersections(
     let copies = Copies::find(&ids, &keys, &mut keep, n, limit);
     drop(keys);
     // The representatives, in curve order.
-    let active: Vec<usize> = (0..ids.len()).filter(|&k| keep[k]).collect();
+    let active: Vec<u32> = (0..ids.len() as u32)
+        .filter(|&k| keep[k as usize])
+        .collect();
+    drop(keep);
     let boxes: Vec<Box32> = active
         .par_iter()
         .map(|&k| {
-            let [a, b, c] = tris[k].map_or([glam::DVec3::ZERO; 3], |t| t.p);
+            let [a, b, c] = mesh.triangle_positions(ids[k as usize] as usize);
             Box32::outward(a.min(b).min(c).to_array(), a.max(b).max(c).to_array())
         })
         .collect();
@@ -131,9 +136,8 @@ pub fn self_intersections(
     let items: Vec<Item> = order
         .par_iter()
         .filter_map(|&o| {
-            let k = active[o as usize];
-            let id = ids[k];
-            tris[k].map(|tri| Item {
+            let id = ids[active[o as usize] as usize];
+            Tri::new(mesh.triangle_positions(id as usize)).map(|tri| Item {
                 id,
                 vertices: mesh.triangles[id as usize],
                 tri,
@@ -141,7 +145,7 @@ pub fn self_intersections(
         })
         .collect();
     let boxes: Vec<Box32> = order.par_iter().map(|&o| boxes[o as usize]).collect();
-    drop((tris, active, order));
+    drop((active, order));
     let tree = LeafTree::new(&boxes);
     let total = (0..tree.leaf_count())
         .into_par_iter()
