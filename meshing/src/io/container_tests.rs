@@ -319,3 +319,32 @@ fn truncations_and_flipped_bytes_never_panic() {
         }
     }
 }
+
+#[test]
+fn trimesh_scenes_read_as_two_closed_shells() {
+    let three_mf = include_bytes!("../../../fixtures/meshes/io/trimesh_scene.3mf");
+    let glb_file = include_bytes!("../../../fixtures/meshes/io/trimesh_scene.glb");
+    // trimesh 5.2.0 measured 36.34815370372854 (box 24 + icosphere).
+    for (bytes, format, tolerance) in [
+        (&three_mf[..], MeshFormat::ThreeMf, 1e-12),
+        (&glb_file[..], MeshFormat::Glb, 1e-5),
+    ] {
+        let mesh = read_mesh_bytes(bytes, format, "trimesh").unwrap();
+        let r = crate::TopologyReport::of(&mesh);
+        assert!(r.is_valid_solid(), "{format:?}: {r:?}");
+        assert_eq!((r.vertices, r.faces, r.shells), (50, 92, 2), "{format:?}");
+        assert!(
+            (r.volume - 36.34815370372854).abs() < tolerance,
+            "{format:?} {}",
+            r.volume
+        );
+        // The 3MF is +Z up as written; the GLB's +Y up comes back as +Z up.
+        let want = match format {
+            MeshFormat::ThreeMf => [[-1.0, -1.5, -2.0], [11.5, 1.5, 2.5]],
+            _ => [[-1.0, -2.5, -1.5], [11.5, 2.0, 1.5]],
+        };
+        for (got, want) in r.bbox.iter().flatten().zip(want.iter().flatten()) {
+            assert!((got - want).abs() < 1e-6, "{format:?} {:?}", r.bbox);
+        }
+    }
+}
