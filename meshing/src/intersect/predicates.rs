@@ -7,7 +7,14 @@ use glam::DVec3;
 use robust::{Coord, Coord3D, orient2d, orient3d};
 
 /// The sign (-1, 0 or 1) of the volume of the tetrahedron `abcd` (0 when coplanar).
+///
+/// Four points with one coordinate equal are coplanar, and the determinant of their differences
+/// has a zero column: exactly 0, decided here without the adaptive stages, which an exact zero
+/// runs to the end (their slowest case). Flat faces of CAD models lie in such planes.
 pub(crate) fn orient(a: DVec3, b: DVec3, c: DVec3, d: DVec3) -> i8 {
+    if (0..3).any(|k| a[k] == b[k] && a[k] == c[k] && a[k] == d[k]) {
+        return 0;
+    }
     let k = |p: DVec3| Coord3D {
         x: p.x,
         y: p.y,
@@ -38,8 +45,12 @@ impl Projection {
             .find(|p| p.orient(a, b, c) != 0)
     }
 
-    /// The sign of the projected triangle `abc` (1: counter-clockwise).
+    /// The sign of the projected triangle `abc` (1: counter-clockwise). Three points with one
+    /// projected coordinate equal are collinear: exactly 0, without the adaptive stages.
     pub(crate) fn orient(self, a: DVec3, b: DVec3, c: DVec3) -> i8 {
+        if self.0.iter().any(|&k| a[k] == b[k] && a[k] == c[k]) {
+            return 0;
+        }
         sign(orient2d(self.coord(a), self.coord(b), self.coord(c)))
     }
 
