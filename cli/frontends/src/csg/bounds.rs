@@ -1,7 +1,9 @@
 //! The bounding box of a solid as OpenSCAD measures it for `resize()`: the box of the geometry
 //! itself, not a conservative bound. [`tight_bbox`] derives it from the tree where every node
-//! keeps it exact (primitives, polyhedra, unions, transforms); otherwise `None`, and the caller
-//! meshes the solid and takes the mesh's box.
+//! keeps it exact (primitives, polyhedra, unions, transforms). Otherwise [`touched_bbox`] tries the
+//! kernel's conservative box: when the solid reaches each of its six faces (a sample of the face
+//! within noise of the surface or inside), that box is exact. Failing both, the caller meshes the
+//! solid and takes the mesh's box.
 
 use glam::{DAffine3, DVec3};
 use solidkit_kernel::primitive::{MeshSource, Primitive};
@@ -114,6 +116,49 @@ pub fn tight_bbox(solid: &Solid) -> Option<Aabb> {
         .aabb()
 }
 
+/// Samples per side of each face of the box in [`touched_bbox`].
+const FACE_SAMPLES: usize = 33;
+
+/// The kernel's box of `solid` when the solid touches each of its faces (then no smaller box
+/// holds it), else `None`.
+pub fn touched_bbox(solid: &Solid) -> Option<Aabb> {
+    let b = solid.bbox();
+    if b.is_empty() || !(b.min.is_finite() && b.max.is_finite()) {
+        return None;
+    }
+    let program = solid.compile();
+    let noise = 1e-6 * (b.max - b.min).max_element();
+    let mut scratch = Default::default();
+    let n = FACE_SAMPLES;
+    let (mut x, mut y, mut z) = (Vec::new(), Vec::new(), Vec::new());
+    let mut out = vec![0.0f32; n * n];
+    for axis in 0..3 {
+        for side in [b.min, b.max] {
+            let (u, v) = ((axis + 1) % 3, (axis + 2) % 3);
+            x.clear();
+            y.clear();
+            z.clear();
+            for j in 0..n {
+                for i in 0..n {
+                    let mut p = side;
+                    let t = |k: usize| k as f64 / (n - 1) as f64;
+                    p[u] = b.min[u] + (b.max[u] - b.min[u]) * t(i);
+                    p[v] = b.min[v] + (b.max[v] - b.min[v]) * t(j);
+                    p[axis] = side[axis];
+                    x.push(p.x as f32);
+                    y.push(p.y as f32);
+                    z.push(p.z as f32);
+                }
+            }
+            program.eval_many(&x, &y, &z, &mut out, &mut scratch);
+            if !out.iter().any(|&f| f64::from(f) <= noise) {
+                return None;
+            }
+        }
+    }
+    Some(b)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -134,5 +179,16 @@ mod tests {
         assert!(tight_bbox(&Solid::sphere(1.0).rotate(DVec3::Z, 45.0)).is_none());
         let d = Solid::difference_all(Solid::sphere(1.0), vec![Solid::sphere(0.5)]);
         assert!(tight_bbox(&d).is_none());
+    }
+
+    #[test]
+    fn a_difference_touching_its_box_keeps_it_one_that_does_not_is_unknown() {
+        let cube = Solid::cuboid(DVec3::splat(10.0));
+        let hole = Solid::cylinder(2.0, 12.0);
+        let d = Solid::difference_all(cube.clone(), vec![hole]);
+        assert_eq!(touched_bbox(&d).map(|b| b.max), Some(DVec3::splat(5.0)));
+        // Cutting off the +x half leaves the kernel's box untouched at x = 5.
+        let half = Solid::cuboid(DVec3::splat(12.0)).translate(DVec3::new(6.0, 0.0, 0.0));
+        assert!(touched_bbox(&Solid::difference_all(cube, vec![half])).is_none());
     }
 }

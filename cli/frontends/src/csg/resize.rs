@@ -5,10 +5,11 @@
 //! `resize([10, 0, 0], auto = true)` scales uniformly). A 2D child uses x and y only. Resizing an
 //! axis along which the child is flat is skipped with a warning, as OpenSCAD does.
 //!
-//! The box is the geometry's own: from the tree where it is exact ([`super::bounds`]), else from a
-//! fine mesh of the children ([`BBOX_RESOLUTION`] cells along the longest side).
+//! The box is the geometry's own: from the tree where it is exact, or the kernel's box where the
+//! children touch all its faces ([`super::bounds`]), else from a fine mesh of the children
+//! ([`BBOX_RESOLUTION`] cells along the longest side).
 
-use super::bounds::tight_bbox;
+use super::bounds::{tight_bbox, touched_bbox};
 use super::convert::{Ctx, Geom, meshed_points, sweep};
 use super::error::CsgError;
 use super::parser::{Stmt, Value};
@@ -88,7 +89,7 @@ pub fn factors(newsize: [f64; 3], auto: [bool; 3], extent: DVec3, dim: usize) ->
 
 /// The bounding box of a solid: exact from the tree, else the box of a fine mesh.
 fn solid_box(stmt: &Stmt, solid: &Solid) -> Result<Aabb, CsgError> {
-    if let Some(b) = tight_bbox(solid) {
+    if let Some(b) = tight_bbox(solid).or_else(|| touched_bbox(solid)) {
         return Ok(b);
     }
     let points = meshed_points(stmt, &Geom::Solid(solid.clone()), BBOX_RESOLUTION)?;
