@@ -358,3 +358,134 @@ fn bad_input_exits_2_and_writes_nothing() {
         assert!(!out.exists());
     }
 }
+
+#[test]
+fn check_compare_and_repair_read_3mf_and_glb() {
+    let dir = tempfile::tempdir().unwrap();
+    for (name, mesh, volume, _) in suite().into_iter().take(3) {
+        for ext in ["3mf", "glb"] {
+            let input = dir.path().join(format!("{name}.{ext}"));
+            write_mesh(&input, &mesh).unwrap();
+            let out = dir.path().join(format!("{name}-fixed.{ext}"));
+            let (code, _, fixed) = repair(&input, &out, &[]);
+            assert_eq!(code, 0, "{name}.{ext}");
+            assert_valid(name, &fixed, Some(volume));
+            let o = solidkit(&["check", path_str(&out)]);
+            assert_eq!(o.status.code(), Some(0), "{name}.{ext}");
+            let o = solidkit(&["compare", path_str(&input), path_str(&out), "--json"]);
+            assert_eq!(o.status.code(), Some(0), "{name}.{ext}");
+        }
+    }
+    let trimesh = solidkit_tests::fixture("meshes/io/trimesh_scene.3mf");
+    assert_eq!(
+        solidkit(&["check", path_str(&trimesh)]).status.code(),
+        Some(0)
+    );
+}
+
+#[test]
+fn check_weld_shares_a_soup_and_prints_a_verdict_with_coordinates() {
+    let dir = tempfile::tempdir().unwrap();
+    let input = dir.path().join("soup.obj");
+    write_mesh(&input, &soup(&cube(DVec3::ZERO, 1.0), 1e-7)).unwrap();
+    let o = solidkit(&["check", path_str(&input), "--no-self-intersections"]);
+    assert_eq!(o.status.code(), Some(1));
+    let text = String::from_utf8_lossy(&o.stdout);
+    let first = text.lines().next().unwrap();
+    assert!(
+        first.starts_with("verdict: NOT a solid: 36 boundary edges"),
+        "{text}"
+    );
+    assert!(
+        text.contains("first offenders at:\n  boundary edge 0-1 at ("),
+        "{text}"
+    );
+    let o = solidkit(&["check", path_str(&input), "--weld", "1e-6"]);
+    assert_eq!(
+        o.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&o.stdout)
+    );
+    let text = String::from_utf8_lossy(&o.stdout);
+    assert!(text.starts_with("verdict: closed oriented 2-manifold, no self-intersections\nwelded: 28 vertices merged within 0.000001\n"), "{text}");
+    let o = solidkit(&["check", path_str(&input), "--weld", "1e-6", "--json"]);
+    let v: Value = serde_json::from_slice(&o.stdout).unwrap();
+    assert_eq!(
+        (v["vertices"].as_u64(), v["vertices_welded"].as_u64()),
+        (Some(8), Some(28))
+    );
+    assert_eq!(
+        v["example_positions"]["boundary_edges"]
+            .as_array()
+            .map(Vec::len),
+        Some(0)
+    );
+    assert!(v["verdict"].as_str().unwrap().starts_with("closed"));
+    let o = solidkit(&["check", path_str(&input), "--weld", "-1"]);
+    assert_eq!(o.status.code(), Some(2));
+}
+
+#[test]
+fn hostile_3mf_and_glb_exit_2_with_located_messages() {
+    let dir = tempfile::tempdir().unwrap();
+    // A stored entry whose headers declare 2 GiB: refused before anything is inflated.
+    let data = b"<model/>";
+    let mut zip = Vec::new();
+    let header = |sig: u32, central: bool| {
+        let mut h = sig.to_le_bytes().to_vec();
+        h.extend(if central {
+            &[20u8, 0, 20, 0][..]
+        } else {
+            &[20u8, 0][..]
+        });
+        h.extend([0, 0, 8, 0, 0, 0, 0x21, 0]); // flags, deflate, time, date
+        h.extend([0u8; 4]); // CRC
+        h.extend((data.len() as u32).to_le_bytes());
+        h.extend((1u32 << 31).to_le_bytes());
+        h.extend((16u16).to_le_bytes());
+        h.extend([0u8; 2]);
+        h
+    };
+    zip.extend(header(0x0403_4b50, false));
+    zip.extend(b"3D/3dmodel.model");
+    zip.extend(data);
+    let start = zip.len() as u32;
+    let mut central = header(0x0201_4b50, true);
+    central.extend([0u8; 14]);
+    central.extend(b"3D/3dmodel.model");
+    zip.extend(&central);
+    zip.extend(0x0605_4b50u32.to_le_bytes());
+    zip.extend([0, 0, 0, 0, 1, 0, 1, 0]);
+    zip.extend((central.len() as u32).to_le_bytes());
+    zip.extend(start.to_le_bytes());
+    zip.extend([0, 0]);
+    let bomb = dir.path().join("bomb.3mf");
+    std::fs::write(&bomb, &zip).unwrap();
+    let glb = dir.path().join("cut.glb");
+    let cube_glb = dir.path().join("cube.glb");
+    write_mesh(&cube_glb, &cube(DVec3::ZERO, 1.0)).unwrap();
+    let bytes = std::fs::read(&cube_glb).unwrap();
+    std::fs::write(&glb, &bytes[..bytes.len() - 10]).unwrap();
+    for (file, words) in [
+        (
+            &bomb,
+            ": byte 0: entry 3D/3dmodel.model: 2147483648 bytes uncompressed, over the limit",
+        ),
+        (&glb, ": byte "),
+    ] {
+        for command in ["check", "repair", "compare"] {
+            let out = dir.path().join("out.off");
+            let args: Vec<&str> = match command {
+                "check" => vec![command, path_str(file)],
+                "repair" => vec![command, path_str(file), "-o", path_str(&out)],
+                _ => vec![command, path_str(file), path_str(file)],
+            };
+            let o = solidkit(&args);
+            assert_eq!(o.status.code(), Some(2), "{command} {file:?}");
+            let err = String::from_utf8_lossy(&o.stderr);
+            assert!(err.contains(&format!("{}{words}", path_str(file))), "{err}");
+            assert!(!out.exists());
+        }
+    }
+}

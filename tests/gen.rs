@@ -548,6 +548,9 @@ fn three_mf_and_glb_round_trip() {
                 )
             };
             assert_eq!(read, want, "{format} {name}");
+            // solidkit's own reader agrees with the independent one.
+            let own = read_mesh(&dir.path().join(s["file"].as_str().expect("file")));
+            assert_eq!(own.expect("read back"), want, "{format} {name}");
             // The manifest measured the mesh as the file stores it.
             let r = TopologyReport::of(&read);
             assert!(

@@ -70,7 +70,7 @@ pub enum RepairMode {
 /// Arguments of `solidkit repair`.
 #[derive(Debug, clap::Args)]
 pub struct RepairArgs {
-    /// The mesh file (.stl .obj .ply .off).
+    /// The mesh file (.stl .obj .ply .off .3mf .glb).
     pub mesh: PathBuf,
     /// Write the repaired mesh here (replaced atomically; nothing is written on bad input).
     #[arg(short, long)]
@@ -263,11 +263,15 @@ impl From<FacetsArg> for solidkit_frontends::csg::Facets {
 /// Arguments of `solidkit check`.
 #[derive(Debug, clap::Args)]
 pub struct CheckArgs {
-    /// The mesh file (.stl .obj .ply .off).
+    /// The mesh file (.stl .obj .ply .off .3mf .glb).
     pub mesh: PathBuf,
     /// Print the report as JSON.
     #[arg(long)]
     pub json: bool,
+    /// Weld vertices within EPS (model units; 0: equal positions) before the report, so a
+    /// triangle soup's corners count as shared vertices.
+    #[arg(long, value_name = "EPS", value_parser = parse_weld)]
+    pub weld: Option<f64>,
     /// Skip the self-intersection count (a self-intersecting mesh then passes).
     #[arg(long)]
     pub no_self_intersections: bool,
@@ -285,7 +289,8 @@ pub struct CheckArgs {
 /// Arguments of `solidkit compare`.
 #[derive(Debug, clap::Args)]
 pub struct CompareArgs {
-    /// The first mesh (.stl .obj .ply .off); relative distances use its bounding-box diagonal.
+    /// The first mesh (.stl .obj .ply .off .3mf .glb); relative distances use its bounding-box
+    /// diagonal.
     pub a: PathBuf,
     /// The second mesh.
     pub b: PathBuf,

@@ -1,14 +1,17 @@
-//! `solidkit check`: read a mesh, report its topology, exit 1 unless it bounds a solid (closed
-//! oriented manifold, no self-intersection).
+//! `solidkit check`: read a mesh (welded within `--weld EPS` if asked), report its topology
+//! under a one-line verdict with the coordinates of the first offenders, exit 1 unless it bounds
+//! a solid (closed oriented manifold, no self-intersection).
 
 use crate::args::CheckArgs;
 use crate::output::{out, outln};
 use crate::report;
-use anyhow::Result;
+use anyhow::{Result, anyhow};
+use serde_json::json;
 use solidkit_meshing::IndexedMesh;
 use solidkit_meshing::io::read_mesh;
 use solidkit_meshing::render::defects::{defect_camera, render_defects};
 use solidkit_meshing::render::png_out::write_png;
+use solidkit_meshing::repair::weld_mesh;
 use solidkit_meshing::topology::DefectItems;
 use solidkit_meshing::{ReportOptions, TopologyReport};
 use std::path::Path;
@@ -16,7 +19,13 @@ use std::path::Path;
 /// Prints the report; exit code 0 for a closed oriented 2-manifold without self-intersections,
 /// 1 otherwise.
 pub fn run(a: &CheckArgs) -> Result<u8> {
-    let mesh = read_mesh(&a.mesh)?;
+    let mut mesh = read_mesh(&a.mesh)?;
+    let mut welded = None;
+    if let Some(eps) = a.weld {
+        let w = weld_mesh(&mesh, eps).map_err(|e| anyhow!("{}: {e}", a.mesh.display()))?;
+        welded = Some((eps, w.merged));
+        mesh = w.mesh;
+    }
     let options = ReportOptions {
         self_intersections: !a.no_self_intersections,
     };
@@ -25,9 +34,25 @@ pub fn run(a: &CheckArgs) -> Result<u8> {
         write_defect_picture(a, &mesh, &options, path)?;
     }
     if a.json {
-        outln!("{}", report::to_json(&r, &[])?)?;
+        let mut extra = vec![
+            ("verdict", json!(r.verdict())),
+            (
+                "example_positions",
+                serde_json::to_value(r.offender_positions(&mesh))?,
+            ),
+        ];
+        if let Some((eps, merged)) = welded {
+            extra.push(("weld", json!(eps)));
+            extra.push(("vertices_welded", json!(merged)));
+        }
+        outln!("{}", report::to_json(&r, &extra)?)?;
     } else {
+        outln!("verdict: {}", r.verdict())?;
+        if let Some((eps, merged)) = welded {
+            outln!("welded: {merged} vertices merged within {eps}")?;
+        }
         out!("{}", r.to_text())?;
+        out!("{}", r.offender_positions_text(&mesh))?;
     }
     Ok(if r.is_valid_solid() { 0 } else { 1 })
 }

@@ -31,6 +31,7 @@ use crate::IndexedMesh;
 use glam::DVec3;
 
 pub use rebuild::{RebuildOptions, Rebuilt, rebuild};
+pub use weld::{WeldedMesh, weld_mesh};
 
 /// Why a mesh cannot be repaired.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]

@@ -31,6 +31,7 @@ mod measures;
 mod shells;
 mod text;
 mod union_find;
+mod verdict;
 mod vertices;
 
 #[cfg(test)]
@@ -43,6 +44,7 @@ use std::borrow::Cow;
 use rayon::prelude::*;
 
 pub use defects::{DefectItems, MAX_DEFECT_PAIRS};
+pub use verdict::{MAX_LOCATED, OffenderPositions};
 pub(crate) use edges::{CornerLoops, EdgeKind, EdgeTable};
 pub(crate) use vertices::fan_counts;
 
