@@ -5,14 +5,12 @@
 use crate::errors;
 use crate::mesh::{PyMesh, indexed_from_arrays, report_dict};
 use crate::run::interruptible;
-use glam::DVec3;
 use numpy::{AllowTypeChange, PyArrayLike2};
 use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
-use serde_json::{Value, json};
+use serde_json::Value;
 use solidkit_meshing::io::read_mesh;
-use solidkit_meshing::measure::{TriangleTree, hausdorff_with};
-use solidkit_meshing::{ReportOptions, TopologyReport};
+use solidkit_meshing::measure::{TriangleTree, compare as compare_meshes};
 use std::path::PathBuf;
 
 /// The most surface samples `compare` takes per mesh (as on the command line).
@@ -67,33 +65,7 @@ fn compare<'py>(
         let (ta, tb) = rayon::join(|| TriangleTree::new(ma), || TriangleTree::new(mb));
         let ta = ta.map_err(|e| format!("first mesh: {e}"))?;
         let tb = tb.map_err(|e| format!("second mesh: {e}"))?;
-        let options = ReportOptions {
-            self_intersections: false,
-        };
-        let (ra, rb) = rayon::join(
-            || TopologyReport::with_options(ma, &options),
-            || TopologyReport::with_options(mb, &options),
-        );
-        let h = hausdorff_with(ma, &ta, mb, &tb, samples);
-        let [lo, hi] = ra.bbox;
-        let diagonal = DVec3::from(hi).distance(DVec3::from(lo));
-        let relative = (diagonal > 0.0).then(|| h.symmetric / diagonal);
-        Ok(json!({
-            "a": serde_json::to_value(&ra).map_err(|e| e.to_string())?,
-            "b": serde_json::to_value(&rb).map_err(|e| e.to_string())?,
-            "hausdorff": {
-                "symmetric": h.symmetric,
-                "a_to_b": h.a_to_b.max,
-                "b_to_a": h.b_to_a.max,
-                "mean_a_to_b": h.a_to_b.mean,
-                "mean_b_to_a": h.b_to_a.mean,
-                "diagonal": diagonal,
-                "relative": relative,
-                "samples": samples,
-                "points_a": h.a_to_b.count,
-                "points_b": h.b_to_a.count,
-            }
-        }))
+        Ok(compare_meshes(ma, &ta, mb, &tb, samples).to_json())
     })?
     .map_err(errors::meshing)?;
     py.import("json")?.call_method1("loads", (v.to_string(),))

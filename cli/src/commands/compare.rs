@@ -4,41 +4,20 @@
 use crate::args::CompareArgs;
 use crate::output::{out, outln};
 use anyhow::{Context, Result};
-use glam::DVec3;
-use serde_json::{Value, json};
 use solidkit_meshing::io::read_mesh;
-use solidkit_meshing::measure::{Hausdorff, TriangleTree, hausdorff_with};
-use solidkit_meshing::{IndexedMesh, ReportOptions, TopologyReport};
+use solidkit_meshing::measure::{Comparison, TriangleTree, compare};
+use solidkit_meshing::{IndexedMesh, TopologyReport};
 use std::path::Path;
 
 /// Prints the comparison; exit code 0 (bad input is an error, exit 2).
 pub fn run(a: &CompareArgs) -> Result<u8> {
     let (mesh_a, tree_a) = load(&a.a)?;
     let (mesh_b, tree_b) = load(&a.b)?;
-    // The key measures only: self-intersections (`check`) would double the time.
-    let options = ReportOptions {
-        self_intersections: false,
-    };
-    let (report_a, report_b) = rayon::join(
-        || TopologyReport::with_options(&mesh_a, &options),
-        || TopologyReport::with_options(&mesh_b, &options),
-    );
-    let h = hausdorff_with(&mesh_a, &tree_a, &mesh_b, &tree_b, a.samples);
-    let [lo, hi] = report_a.bbox;
-    let diagonal = DVec3::from(hi).distance(DVec3::from(lo));
-    let relative = (diagonal > 0.0).then(|| h.symmetric / diagonal);
+    let c = compare(&mesh_a, &tree_a, &mesh_b, &tree_b, a.samples);
     if a.json {
-        let v = json!({
-            "a": serde_json::to_value(&report_a)?,
-            "b": serde_json::to_value(&report_b)?,
-            "hausdorff": hausdorff_json(&h, diagonal, relative, a.samples),
-        });
-        outln!("{}", serde_json::to_string_pretty(&v)?)?;
+        outln!("{}", serde_json::to_string_pretty(&c.to_json())?)?;
     } else {
-        out!(
-            "{}",
-            text(a, [&report_a, &report_b], &h, diagonal, relative)
-        )?;
+        out!("{}", text(a, &c))?;
     }
     Ok(0)
 }
@@ -50,30 +29,10 @@ fn load(path: &Path) -> Result<(IndexedMesh, TriangleTree)> {
     Ok((mesh, tree))
 }
 
-/// The `hausdorff` object of the JSON output (keys documented in the README).
-fn hausdorff_json(h: &Hausdorff, diagonal: f64, relative: Option<f64>, samples: usize) -> Value {
-    json!({
-        "symmetric": h.symmetric,
-        "a_to_b": h.a_to_b.max,
-        "b_to_a": h.b_to_a.max,
-        "mean_a_to_b": h.a_to_b.mean,
-        "mean_b_to_a": h.b_to_a.mean,
-        "diagonal": diagonal,
-        "relative": relative,
-        "samples": samples,
-        "points_a": h.a_to_b.count,
-        "points_b": h.b_to_a.count,
-    })
-}
-
 /// The text output: a two-column table of measures, then the distances.
-fn text(
-    a: &CompareArgs,
-    [ra, rb]: [&TopologyReport; 2],
-    h: &Hausdorff,
-    diagonal: f64,
-    relative: Option<f64>,
-) -> String {
+fn text(a: &CompareArgs, c: &Comparison) -> String {
+    let (ra, rb, h) = (&c.a, &c.b, &c.hausdorff);
+    let (diagonal, relative) = (c.diagonal, c.relative);
     let genus = |r: &TopologyReport| r.genus.map_or("-".to_string(), |g| g.to_string());
     let yes_no = |b: bool| if b { "yes" } else { "no" }.to_string();
     let rows: [(&str, String, String); 9] = [

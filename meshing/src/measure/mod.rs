@@ -1,7 +1,8 @@
 //! Distance measures between surfaces: the nearest point of a mesh to a query point (the kernel's
 //! triangle bounding volume hierarchy, [`TriangleTree`]), the exact nearest
 //! point of a triangle, deterministic surface samples, and the one-sided and symmetric Hausdorff
-//! distances between meshes or from a point set (e.g. samples of an exact surface) to a mesh.
+//! distances between meshes or from a point set (e.g. samples of an exact surface) to a mesh,
+//! and [`compare`]: two meshes' key measures and distances side by side.
 //!
 //! ```
 //! use glam::DVec3;
@@ -18,6 +19,7 @@
 //! assert!((h.symmetric - 0.5).abs() < 1e-12);
 //! ```
 
+mod compare;
 mod error;
 mod hausdorff;
 mod rng;
@@ -28,6 +30,7 @@ mod triangle;
 #[cfg(test)]
 mod tests;
 
+pub use compare::{Comparison, compare};
 pub use error::MeasureError;
 pub use hausdorff::{Hausdorff, OneSided, hausdorff, hausdorff_with, one_sided, samples_to_mesh};
 pub use sample::SurfaceSamples;
