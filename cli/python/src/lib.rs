@@ -16,6 +16,7 @@ mod run;
 mod solid;
 mod suite;
 mod tools;
+mod warn;
 
 use pyo3::prelude::*;
 

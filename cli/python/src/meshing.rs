@@ -3,11 +3,10 @@
 
 use crate::mesh::PyMesh;
 use crate::run::{ProgressSlot, interruptible};
-use crate::solid::PySolid;
 use glam::DVec3;
 use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
-use solidkit_kernel::Aabb;
+use solidkit_kernel::{Aabb, Solid};
 use solidkit_meshing::octree::{CancelToken, Progress};
 use solidkit_meshing::pipeline::limits::{MAX_RESOLUTION, default_max_memory};
 use solidkit_meshing::pipeline::{Domain, MeshOptions, Method, PipelineError, Prepared};
@@ -32,22 +31,6 @@ pub struct MeshArgs<'a, 'py> {
     pub threads: Option<usize>,
     /// `progress(stage, done, total)`.
     pub progress: Option<Bound<'py, PyAny>>,
-}
-
-/// Issues every line of `warnings` through Python's `warnings.warn`.
-pub fn warn_all(py: Python<'_>, warnings: &[String]) -> PyResult<()> {
-    if warnings.is_empty() {
-        return Ok(());
-    }
-    let warn = py.import("warnings")?.getattr("warn")?;
-    for w in warnings {
-        warn.call1((
-            w.as_str(),
-            py.get_type::<pyo3::exceptions::PyUserWarning>(),
-            2,
-        ))?;
-    }
-    Ok(())
 }
 
 /// The pipeline's options for `a`, range-checked like the command line's.
@@ -104,9 +87,14 @@ fn options(a: &MeshArgs<'_, '_>) -> PyResult<MeshOptions> {
         .max_memory(Some(a.max_memory.unwrap_or_else(default_max_memory))))
 }
 
-/// Meshes `s` as `a` asks.
-pub fn mesh(py: Python<'_>, s: &PySolid, a: MeshArgs<'_, '_>) -> PyResult<PyMesh> {
-    let solid = s.validated()?;
+/// Meshes `solid` (checked) as `a` asks; `loaded` are the warnings its front end gave, kept
+/// first in the mesh's warnings (they were issued when it was loaded).
+pub fn mesh(
+    py: Python<'_>,
+    solid: &Solid,
+    loaded: &[String],
+    a: MeshArgs<'_, '_>,
+) -> PyResult<PyMesh> {
     let slot = Arc::new(ProgressSlot::default());
     let token = CancelToken::new();
     let mut options = options(&a)?.cancel(token.clone());
@@ -129,12 +117,12 @@ pub fn mesh(py: Python<'_>, s: &PySolid, a: MeshArgs<'_, '_>) -> PyResult<PyMesh
         ),
         e => crate::errors::meshing(e),
     })?;
-    warnings.splice(0..0, s.warnings.iter().cloned());
+    warnings.splice(0..0, loaded.iter().cloned());
     warnings.extend(meshed.warnings.iter().cloned());
     let warnings: Vec<String> = warnings
         .iter()
         .map(|w| crate::errors::pythonic(w))
         .collect();
-    warn_all(py, &warnings[s.warnings.len()..])?;
+    crate::warn::warn_all(py, &warnings[loaded.len()..])?;
     PyMesh::from_meshed(py, meshed, warnings, a.resolution, a.method)
 }

@@ -252,7 +252,7 @@ fn load(
         solid: loaded.solid,
         warnings: loaded.warnings,
     };
-    crate::meshing::warn_all(py, &s.warnings)?;
+    crate::warn::warn_all(py, &s.warnings)?;
     Ok(s)
 }
 
@@ -406,7 +406,7 @@ impl PySolid {
             threads,
             progress,
         };
-        crate::meshing::mesh(py, self, args)
+        crate::meshing::mesh(py, self.validated()?, &self.warnings, args)
     }
 }
 

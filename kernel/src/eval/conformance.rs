@@ -9,8 +9,8 @@
 //! cylinder). The checks one by one take the points or boxes to check at.
 
 use super::{Evaluator, Pruned, ZeroSide, box_scale};
+use crate::eval::margin;
 use crate::primitive::{Gyroid, Primitive};
-use crate::program::interval::margin;
 use crate::program::perturb::{PERTURBATION, tie_tolerance};
 use crate::{Aabb, Solid};
 use glam::DVec3;

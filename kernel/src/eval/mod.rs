@@ -26,7 +26,7 @@
 //! - batch values agree with the scalar value within single-precision rounding, and do not depend
 //!   on how points are batched (a point gives the same bits alone or among others);
 //! - the interval over a box contains the value at every point of it (the `f32` values within
-//!   the safety margin [`margin`](crate::program::interval::margin));
+//!   the safety margin [`margin`]);
 //! - a box [`Pruned::Inside`] (`Outside`) has only negative (positive) values, and an evaluator
 //!   pruned for a box gives the same `f32` values (bit for bit), `f64` values (up to rounding) and
 //!   zero sides as the full one everywhere inside the box, and is no longer than it (pruning it
@@ -60,7 +60,7 @@ mod tests;
 
 pub use crate::program::perturb::ZeroSide;
 pub use field::AsField;
-pub use pruned::{Pruned, box_scale};
+pub use pruned::{Pruned, box_scale, margin};
 
 use crate::{Aabb, Interval};
 use glam::DVec3;

@@ -6,7 +6,6 @@
 //! values in it then have that sign too, and the sparse meshers cull it without changing a
 //! sample.
 
-use crate::program::interval::margin;
 use crate::{Aabb, Interval};
 
 /// The outcome of pruning an evaluator `E` over a box.
@@ -19,6 +18,13 @@ pub enum Pruned<E> {
     /// The surface may cross the box; the shorter evaluator valid in it, or `None` when nothing
     /// could be cut (the original one applies).
     Surface(Option<E>),
+}
+
+/// Safety margin for comparisons between f64 intervals whose values will be evaluated in f32:
+/// a few hundred single-precision ulps of the magnitudes involved.
+pub fn margin(scale: f64, a: f64, b: f64) -> f64 {
+    let m = scale + a.abs().min(1e30) + b.abs().min(1e30);
+    3e-5 * m
 }
 
 /// The coordinate scale of a box for [`margin`]: one plus its largest coordinate magnitude

@@ -4,7 +4,8 @@
 //!
 //! Bit-identity needs care because points are evaluated in f32 and intervals in f64: a branch is
 //! only dropped when the other operand wins by more than a margin that covers single-precision
-//! rounding (see [`margin`]), and boxes are only classified inside/outside with the same margin.
+//! rounding (see [`margin`](crate::eval::margin)), and boxes are only classified inside/outside
+//! with the same margin.
 
 use super::{Instr, Program};
 use crate::eval::{Pruned, box_scale};
@@ -32,13 +33,6 @@ pub struct IntervalScratch {
     prunable: bool,
     live: Vec<bool>,
     map: Vec<u32>,
-}
-
-/// Safety margin for comparisons between f64 intervals whose values will be evaluated in f32:
-/// a few hundred single-precision ulps of the magnitudes involved.
-pub fn margin(scale: f64, a: f64, b: f64) -> f64 {
-    let m = scale + a.abs().min(1e30) + b.abs().min(1e30);
-    3e-5 * m
 }
 
 impl Program {
