@@ -348,3 +348,30 @@ fn trimesh_scenes_read_as_two_closed_shells() {
         }
     }
 }
+
+#[test]
+fn expansion_bombs_are_refused_before_copying() {
+    // Object k + 1 holds object k twice: 2^25 triangles from a few kilobytes.
+    let mut resources = TRIANGLE_OBJECT.replace("id=\"5\"", "id=\"1\"");
+    for k in 1..=25 {
+        resources += &format!(
+            "<object id=\"{}\"><components><component objectid=\"{k}\"/><component objectid=\"{k}\"/></components></object>",
+            k + 1
+        );
+    }
+    let xml = model(&resources, "<item objectid=\"26\"/>");
+    let bytes = zip(&[("3D/3dmodel.model", xml.as_bytes(), true)]);
+    let e = read_mesh_bytes(&bytes, MeshFormat::ThreeMf, "b.3mf")
+        .unwrap_err()
+        .to_string();
+    assert!(e.contains(": line 4: the build places more than"), "{e}");
+    // A GLB accessor declaring 2^27 positions is refused from its count.
+    let json = strip_json(r#"[{"mesh":0}]"#, "").replace(
+        "\"count\":4,\"type\":\"VEC3\"",
+        "\"count\":134217728,\"type\":\"VEC3\"",
+    );
+    let e = read_mesh_bytes(&glb(&json, &strip_bin()), MeshFormat::Glb, "b.glb")
+        .unwrap_err()
+        .to_string();
+    assert!(e.contains("expands to more than"), "{e}");
+}

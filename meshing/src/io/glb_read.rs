@@ -151,7 +151,7 @@ impl Reader<'_> {
             .rev()
             .map(|&n| (n, DAffine3::IDENTITY))
             .collect();
-        let mut mesh = IndexedMesh::default();
+        let mut draws: Vec<(usize, usize, DAffine3)> = Vec::new();
         while let Some((n, parent)) = stack.pop() {
             let node = g
                 .nodes
@@ -162,12 +162,45 @@ impl Reader<'_> {
             }
             let world = parent * local(node).map_err(|m| self.err(format!("nodes[{n}]: {m}")))?;
             if let Some(m) = node.mesh {
-                self.add_mesh(&mut mesh, m, &to_z_up(world))
-                    .map_err(|e| self.err(format!("nodes[{n}]: meshes[{m}]{e}")))?;
+                draws.push((n, m, to_z_up(world)));
             }
             stack.extend(node.children.iter().rev().map(|&c| (c, world)));
         }
+        // What the scene expands to, from the accessors' counts, before anything is read: a
+        // small mesh drawn by many nodes must not grow into gigabytes.
+        let total = draws.iter().fold(0usize, |sum, &(_, m, _)| {
+            sum.saturating_add(self.declared_elements(m))
+        });
+        if total > MAX_ELEMENTS {
+            return Err(self.err(format!(
+                "the scene expands to more than {MAX_ELEMENTS} vertices and triangles"
+            )));
+        }
+        let mut mesh = IndexedMesh::default();
+        for (n, m, t) in draws {
+            self.add_mesh(&mut mesh, m, &t)
+                .map_err(|e| self.err(format!("nodes[{n}]: meshes[{m}]{e}")))?;
+        }
         Ok(mesh)
+    }
+
+    /// Positions plus index count of mesh `m`'s surface primitives, as the accessors declare
+    /// them (an upper bound of its vertices and triangles; 0 for what does not exist).
+    fn declared_elements(&self, m: usize) -> usize {
+        let count = |a: Option<usize>| {
+            a.and_then(|a| self.gltf.accessors.get(a))
+                .map_or(0, |acc| usize::try_from(acc.count).unwrap_or(usize::MAX))
+        };
+        self.gltf.meshes.get(m).map_or(0, |mesh| {
+            mesh.primitives
+                .iter()
+                .filter(|p| matches!(p.mode, 4..=6))
+                .fold(0usize, |sum, p| {
+                    let positions = count(p.attributes.get("POSITION").copied());
+                    let indices = p.indices.map_or(positions, |i| count(Some(i)));
+                    sum.saturating_add(positions).saturating_add(indices)
+                })
+        })
     }
 
     /// Appends every primitive of mesh `m`; errors start with the primitive's path.

@@ -14,8 +14,9 @@ use glam::{DAffine3, DMat3, DVec3};
 
 use super::xml::{Scanner, Tag, XmlError, attribute, attributes};
 
-/// The most vertices plus triangles a model part may declare.
-pub(super) const MAX_ELEMENTS: usize = 1 << 28;
+/// The most vertices plus triangles a model part may declare, and a 3MF build or a GLB scene
+/// may expand to (2²⁶: about 1.6 GiB of mesh; a 1 GiB model part holds at most about 2²⁵).
+pub(super) const MAX_ELEMENTS: usize = 1 << 26;
 
 /// An object resource.
 #[derive(Debug, Default)]

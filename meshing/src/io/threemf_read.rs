@@ -10,7 +10,7 @@
 
 use glam::DAffine3;
 
-use super::threemf_model::{self, MAX_ELEMENTS, Model, Placement};
+use super::threemf_model::{self, MAX_ELEMENTS, Model, Object, Placement};
 use super::unzip::{Archive, MAX_ENTRY_BYTES};
 use super::xml::{Scanner, Tag, XmlError, attribute, attributes};
 use super::{Location, MeshIoError};
@@ -18,6 +18,8 @@ use crate::IndexedMesh;
 
 /// How deep components may nest below a build item.
 pub(super) const MAX_DEPTH: usize = 32;
+/// The most object placements (items and components) a build may expand to.
+pub(super) const MAX_PLACEMENTS: usize = 1 << 22;
 /// The part read when the package has no model relationship.
 const DEFAULT_MODEL: &str = "3D/3dmodel.model";
 /// The package relationships.
@@ -105,10 +107,62 @@ fn model_part(archive: &Archive<'_>, name: &str, limit: u64) -> Result<String, M
     Ok(DEFAULT_MODEL.into())
 }
 
-/// Every build item's meshes, transformed, in one mesh.
+/// Every build item's meshes, transformed, in one mesh. The build is walked twice: first to
+/// count what it expands to (refused over [`MAX_ELEMENTS`] before anything is copied, so a few
+/// nested components cannot multiply a small file into gigabytes), then to copy.
 fn build(model: &Model) -> Result<IndexedMesh, XmlError> {
+    let mut total = 0usize;
+    walk(model, |place, object| {
+        total = total
+            .saturating_add(object.positions.len())
+            .saturating_add(object.triangles.len());
+        if total > MAX_ELEMENTS {
+            return Err(XmlError {
+                line: place.line,
+                message: format!(
+                    "the build expands to more than {MAX_ELEMENTS} vertices and triangles"
+                ),
+            });
+        }
+        Ok(())
+    })?;
     let mut mesh = IndexedMesh::default();
+    walk(model, |place, object| {
+        let base = mesh.positions.len() as u32;
+        if place.transform == DAffine3::IDENTITY {
+            mesh.positions.extend_from_slice(&object.positions);
+        } else {
+            let moved = object
+                .positions
+                .iter()
+                .map(|&p| place.transform.transform_point3(p));
+            mesh.positions.extend(moved);
+        }
+        if !mesh.positions[base as usize..]
+            .iter()
+            .all(|p| p.is_finite())
+        {
+            return Err(XmlError {
+                line: place.line,
+                message: "a vertex is not finite once the transform is applied".into(),
+            });
+        }
+        let shifted = object.triangles.iter().map(|t| t.map(|v| v + base));
+        mesh.triangles.extend(shifted);
+        Ok(())
+    })?;
+    Ok(mesh)
+}
+
+/// Calls `visit` for each object placement of the build (items, then their components depth
+/// first, transforms composed), with an explicit stack; refuses undefined objects, nesting
+/// deeper than [`MAX_DEPTH`] and more than [`MAX_PLACEMENTS`] placements.
+fn walk(
+    model: &Model,
+    mut visit: impl FnMut(&Placement, &Object) -> Result<(), XmlError>,
+) -> Result<(), XmlError> {
     let mut stack: Vec<(Placement, usize)> = Vec::new();
+    let mut placements = 0usize;
     for item in &model.items {
         stack.push((*item, 0));
         while let Some((place, depth)) = stack.pop() {
@@ -125,35 +179,18 @@ fn build(model: &Model) -> Result<IndexedMesh, XmlError> {
                     "components nested more than {MAX_DEPTH} deep (a cycle?)"
                 )));
             }
-            let total = mesh.positions.len() + object.positions.len();
-            if total + mesh.triangles.len() + object.triangles.len() > MAX_ELEMENTS {
+            placements += 1;
+            if placements > MAX_PLACEMENTS {
                 return Err(err(format!(
-                    "the build expands to more than {MAX_ELEMENTS} vertices and triangles"
+                    "the build places more than {MAX_PLACEMENTS} objects"
                 )));
             }
-            let base = mesh.positions.len() as u32;
-            if place.transform == DAffine3::IDENTITY {
-                mesh.positions.extend_from_slice(&object.positions);
-            } else {
-                let moved = object
-                    .positions
-                    .iter()
-                    .map(|&p| place.transform.transform_point3(p));
-                mesh.positions.extend(moved);
-            }
-            let shifted = object.triangles.iter().map(|t| t.map(|v| v + base));
-            mesh.triangles.extend(shifted);
+            visit(&place, object)?;
             for c in object.components.iter().rev() {
                 let transform = place.transform * c.transform;
                 stack.push((Placement { transform, ..*c }, depth + 1));
             }
         }
     }
-    if let Some(v) = mesh.positions.iter().position(|p| !p.is_finite()) {
-        return Err(XmlError {
-            line: 1,
-            message: format!("vertex {v} is not finite once the build transforms are applied"),
-        });
-    }
-    Ok(mesh)
+    Ok(())
 }
