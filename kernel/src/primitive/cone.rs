@@ -38,23 +38,34 @@ impl Cone {
         }
         let (a, b) = (DVec2::new(r1, -h), DVec2::new(r2, h));
         let ab = b - a;
-        let t = ((q - a).dot(ab) / ab.length_squared()).clamp(0.0, 1.0);
+        // Which part of the side is nearest, measured from each end (`(q − a)·ab / |ab|²` rounds
+        // to 1 near the smaller end when one radius dwarfs the other: bottom 1.2e20, top 0.56
+        // gave the distance to the top rim for every point near the axis, a field far from
+        // 1-Lipschitz, and open meshes in issue 15's fuzzing).
+        let (from_a, from_b) = ((q - a).dot(ab), (q - b).dot(ab));
         // Between the ends, the distance to the side line by projection on its unit normal:
         // stable for any height. (`|q − (a + t·ab)|` cancels catastrophically when the height
         // dwarfs the radii: errors of ε·h, 10⁴ at h = 10²⁰, broke meshes in issue 15.)
-        let (d, c) = if t > 0.0 && t < 1.0 {
+        let (d, c) = if from_a > 0.0 && from_b < 0.0 {
             let n = DVec2::new(ab.y, -ab.x) / ab.length();
             let s = (q - a).dot(n);
             (s.abs(), q - n * s)
         } else {
-            let c = a + ab * t;
+            let c = if from_a <= 0.0 { a } else { b };
             ((q - c).length(), c)
         };
         if d < best.0 {
             best = (d, c, DVec2::new(ab.y, -ab.x).normalize());
         }
         let (d, c, n) = best;
-        let inside = q.y.abs() <= h && q.x <= r1 + (r2 - r1) * (q.y + h) / (2.0 * h);
+        // The side's radius at q's height, from the nearer end (the other end's radius may
+        // swallow the nearer one's).
+        let side = if q.y >= 0.0 {
+            r2 + (r1 - r2) * (h - q.y) / (2.0 * h)
+        } else {
+            r1 + (r2 - r1) * (q.y + h) / (2.0 * h)
+        };
+        let inside = q.y.abs() <= h && q.x <= side;
         let dir = if d > 1e-300 { (q - c) / d } else { n };
         if inside { (-d, -dir) } else { (d, dir) }
     }
