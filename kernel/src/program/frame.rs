@@ -45,6 +45,17 @@ impl Frame {
         }
     }
 
+    /// This frame with its offset reduced modulo `period` on each axis, for a primitive periodic
+    /// with that period along its own axes (the gyroid: 2π). A gyroid translated by 10⁶ or more
+    /// was evaluated at single-precision coordinates a whole step of 0.1 or more apart, far from
+    /// the intervals' idea of it, and meshed open (issue 15); the reduced map is the same field.
+    pub(crate) fn reduced_offset(&self, period: f64) -> Self {
+        let mut inverse = self.inverse;
+        let t = inverse.translation;
+        inverse.translation = t - (t / period).round() * period;
+        Self::from_affine(inverse, self.sigma)
+    }
+
     /// This frame entered into a child of transform `t`: points go through `t⁻¹` after this map.
     pub fn then(&self, t: &Transform) -> Self {
         Self::from_affine(t.inverse * self.inverse, self.sigma * t.sigma)

@@ -73,6 +73,13 @@ impl Lowerer {
     }
 
     fn leaf(&mut self, p: &Primitive, frame: u32) -> u32 {
+        let frame = if let Primitive::Gyroid(_) = p {
+            // Periodic: a far offset only loses precision (see `Frame::reduced_offset`).
+            let reduced = self.frames[frame as usize].reduced_offset(std::f64::consts::TAU);
+            self.frame_id(reduced)
+        } else {
+            frame
+        };
         let b = p.bbox();
         let key = (
             frame,
