@@ -51,6 +51,15 @@ pub(crate) fn check_shape(shape: &impl Shape, extent: f64) {
                 "inside point {a} outside bbox"
             );
         }
+        // The sublevel boxes offsets and shells use hold their sublevel sets (issue 15).
+        for level in [0.02, 0.2, 1.0].map(|k| k * extent) {
+            if fa <= level && shape.sublevel_boxes_hold() {
+                assert!(
+                    shape.bbox_at(level).expanded(1e-9 * extent).contains(a),
+                    "point {a} with value {fa} <= {level} outside bbox_at({level})"
+                );
+            }
+        }
         // Gradient against central differences, away from creases where it is discontinuous.
         let h = 1e-6 * extent;
         let fd = DVec3::new(

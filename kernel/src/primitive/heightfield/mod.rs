@@ -316,6 +316,10 @@ impl Shape for HeightField {
     fn bbox(&self) -> Aabb {
         Aabb::new(self.min.extend(self.base), self.max.extend(self.bounds.hi))
     }
+    fn sublevel_boxes_hold(&self) -> bool {
+        // A slope-divided distance bound: see `Shape::sublevel_boxes_hold`.
+        false
+    }
     fn validate(&self) -> Result<(), PrimitiveError> {
         // Checked by the constructors; the fields are private.
         Ok(())

@@ -228,6 +228,10 @@ impl Shape for Extrude {
         let (a, b) = (lo.min(lo * self.scale), hi.max(hi * self.scale));
         Aabb::new(DVec3::new(a.x, a.y, -h2), DVec3::new(b.x, b.y, h2))
     }
+    fn sublevel_boxes_hold(&self) -> bool {
+        // A slope-divided distance bound: see `Shape::sublevel_boxes_hold`.
+        false
+    }
     fn validate(&self) -> Result<(), PrimitiveError> {
         // Checked when built: an `Extrude` is always valid.
         Ok(())

@@ -220,6 +220,10 @@ impl Shape for Loft {
         let h2 = 0.5 * self.height;
         Aabb::new(a0.min(b0).extend(-h2), a1.max(b1).extend(h2))
     }
+    fn sublevel_boxes_hold(&self) -> bool {
+        // A slope-divided distance bound: see `Shape::sublevel_boxes_hold`.
+        false
+    }
     fn validate(&self) -> Result<(), PrimitiveError> {
         // Checked when built: a `Loft` is always valid.
         Ok(())

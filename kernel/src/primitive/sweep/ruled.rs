@@ -185,6 +185,10 @@ impl Shape for Ruled {
             DVec3::new(b.max.x, b.max.y, self.z1),
         )
     }
+    fn sublevel_boxes_hold(&self) -> bool {
+        // A slope-divided distance bound: see `Shape::sublevel_boxes_hold`.
+        false
+    }
     fn validate(&self) -> Result<(), PrimitiveError> {
         // Checked when built: a `Ruled` is always valid.
         Ok(())

@@ -445,6 +445,10 @@ impl Shape for Sweep {
     fn bbox(&self) -> Aabb {
         self.index.bbox().expanded(self.radius)
     }
+    fn sublevel_boxes_hold(&self) -> bool {
+        // A slope-divided distance bound: see `Shape::sublevel_boxes_hold`.
+        false
+    }
     fn validate(&self) -> Result<(), PrimitiveError> {
         // Checked when built: a `Sweep` is always valid.
         Ok(())
