@@ -138,7 +138,7 @@ impl GridSpec {
         let bound = (0..3)
             .map(|a| spec.origin[a].abs().max(far[a].abs()))
             .fold(0.0, f64::max);
-        if !(bound <= MAX_COORDINATE) {
+        if bound.is_nan() || bound > MAX_COORDINATE {
             return Err(GridError::BeyondSinglePrecision { bound });
         }
         let band = f64::from(NOISE) * (1.0 + bound);

@@ -70,7 +70,7 @@ pub fn reaches_edge(program: &Program, spec: &GridSpec) -> bool {
                     out.resize(xs.len(), 0.0);
                     program.eval_many(&xs, &ys, &zs, &mut out, &mut batch);
                     // NaN or a value at or below zero: the cut may have changed the mesh.
-                    if out.iter().any(|&v| !(v > 0.0)) {
+                    if out.iter().any(|&v| v.is_nan() || v <= 0.0) {
                         return true;
                     }
                     continue;
