@@ -370,3 +370,71 @@ fn a_solid_beyond_its_box_is_cut_closed_at_the_grid_with_a_warning() {
         assert!(stderr(&o).contains("warning: "), "{}", stderr(&o));
     }
 }
+
+#[test]
+fn a_cone_with_one_huge_radius_meshes_closed() {
+    // Bottom radius 1.2e20, top 0.56, height 1.25 (cli_hostile_fuzz's 30-minute run: 8 of 11 open
+    // meshes in 72 547 trees were such cones): the projection parameter (q − a)·ab/|ab|² rounded
+    // to 1 for every point near the axis and a + ab·1 lost the top radius, so the field was the
+    // distance to a point on the axis, far from 1-Lipschitz, and the octree's intervals culled
+    // boxes the samples disagreed with. Within these bounds the solid is the box's slab
+    // |z| ≤ h/2 (the side falls by 1e-20 per unit of radius).
+    let tree = fixture("hostile/cone_huge_bottom.json");
+    let side: f64 = 2.3678363835806655;
+    let bounds = format!("--bounds={0},{0},{0},{1},{1},{1}", -side, side);
+    let volume = (2.0 * side).powi(2) * 1.2525190746381607;
+    for method in ["mc", "dc"] {
+        for resolution in ["20", "28"] {
+            let o = mesh(&[
+                path_str(&tree),
+                &bounds,
+                "--method",
+                method,
+                "--resolution",
+                resolution,
+            ]);
+            let what = format!("{method} {resolution}");
+            let r = closed_manifold(&o, &what);
+            assert_eq!(r["shells"], 1, "{what}: {r}");
+            let v = r["volume"].as_f64().unwrap();
+            assert!((v / volume - 1.0).abs() < 0.03, "{what}: {v} vs {volume}");
+        }
+    }
+}
+
+#[test]
+fn a_far_translated_gyroid_is_the_gyroid_at_its_reduced_offset() {
+    // A gyroid translated by 1.1e6 (3 of 11 open meshes in the 30-minute run, up to 1.4e12): in
+    // single precision its local coordinates were 0.125 apart (65 536 at 1e12), samples and
+    // intervals disagreed, and the mesh was open. The gyroid is 2π-periodic, so lowering reduces
+    // a leaf's offset modulo 2π: the same field, evaluated near its origin.
+    let dir = tempfile::tempdir().unwrap();
+    let near = dir.path().join("near.json");
+    std::fs::write(
+        &near,
+        r#"{"type": "translate", "offset": [-1.5616561418864876, 0.5606114804973388, -0.7482649913448092], "child": {"type": "gyroid", "thickness": 0.06479220955615479}}"#,
+    )
+    .unwrap();
+    let far = fixture("hostile/gyroid_far_translation.json");
+    let bounds = "--bounds=-2.204999687457148,-2.204999687457148,-2.204999687457148,\
+                  2.204999687457148,2.204999687457148,2.204999687457148";
+    for method in ["mc", "dc"] {
+        let run = |tree: &std::path::Path| {
+            let o = mesh(&[
+                path_str(tree),
+                bounds,
+                "--method",
+                method,
+                "--resolution",
+                "28",
+                "--refine",
+                "1",
+            ]);
+            closed_manifold(&o, method)
+        };
+        let (a, b) = (run(&far), run(&near));
+        let (va, vb) = (a["volume"].as_f64().unwrap(), b["volume"].as_f64().unwrap());
+        assert!((va / vb - 1.0).abs() < 0.01, "{method}: {va} vs {vb}");
+        assert_eq!(a["shells"], b["shells"], "{method}");
+    }
+}
