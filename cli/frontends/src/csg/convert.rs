@@ -13,7 +13,7 @@ use super::parser::{Stmt, Tree, Value};
 use super::projection::projection;
 use super::resize::resize;
 use super::surface::surface;
-use super::text::text;
+use super::text::{TextCache, text};
 use glam::{DVec2, DVec3};
 use solidkit_kernel::polyhedra::Polyhedron;
 use solidkit_kernel::primitive::{Extrude, MeshResolver, Primitive, Revolve};
@@ -53,6 +53,8 @@ pub(super) struct Ctx<'a> {
     facets: Facets,
     files: &'a dyn MeshResolver,
     warnings: Vec<Warning>,
+    /// `text()` drawings by their `.scad` source (OpenSCAD runs once per distinct text).
+    texts: TextCache,
 }
 
 impl Ctx<'_> {
@@ -76,6 +78,7 @@ pub fn convert(
         facets,
         files,
         warnings: Vec::new(),
+        texts: TextCache::default(),
     };
     // The arena is in document order, so the first `!` is the one with the smallest index.
     let marked: Vec<usize> = (0..tree.nodes.len())
@@ -449,7 +452,7 @@ fn node(
                 }
             }
         }
-        "text" => leaf(text(stmt)?.map_or(Geom::Empty, Geom::Flat)),
+        "text" => leaf(text(stmt, &mut ctx.texts)?.map_or(Geom::Empty, Geom::Flat)),
         "projection" => {
             let mut solids = Vec::new();
             let mut ignored = false;

@@ -62,13 +62,21 @@ fn glyphs_keep_their_holes_and_empty_text_is_empty() {
         return;
     }
     // "o" and "b" have one hole each, "l" none: three parts, 2 + 2 + 1 loops.
-    let f = text(&stmt("text(text = \"obl\", size = 10);"))
+    let mut cache = Default::default();
+    let f = text(&stmt("text(text = \"obl\", size = 10);"), &mut cache)
         .unwrap()
         .unwrap();
     let mut p = parts(&f);
     p.sort_unstable();
     assert_eq!(p, [1, 2, 2]);
-    assert_eq!(text(&stmt("text(text = \"\", size = 10);")).unwrap(), None);
+    assert_eq!(
+        text(&stmt("text(text = \"\", size = 10);"), &mut cache).unwrap(),
+        None
+    );
+    // Drawn once per distinct text.
+    assert_eq!(cache.len(), 2);
+    let again = text(&stmt("text(text = \"obl\", size = 10);"), &mut cache).unwrap();
+    assert_eq!(again, Some(f));
 }
 
 #[test]

@@ -2,8 +2,9 @@
 //! importer does not carry, so the statement is written back as a one-line `.scad` file
 //! (the same arguments), `openscad -o text.dxf text.scad` renders it in a private temporary
 //! folder (killed after [`TIMEOUT`]), and the drawing is read with [`super::dxf`] as polygons
-//! (one leaf per glyph outline with its holes). Without an `openscad` program on `PATH`, `text`
-//! is an error that says so. The DXF carries OpenSCAD's 6 significant digits.
+//! (one leaf per glyph outline with its holes); each distinct text is drawn once per import.
+//! Without an `openscad` program on `PATH`, `text` is an error that says so. The DXF carries
+//! OpenSCAD's 6 significant digits.
 
 use super::contour::region;
 use super::dxf::{self, DxfOptions};
@@ -11,6 +12,7 @@ use super::error::CsgError;
 use super::flat::Flat;
 use super::parser::{Stmt, Value};
 use glam::DVec2;
+use std::collections::HashMap;
 use std::path::{Path, PathBuf};
 use std::process::{Command, Stdio};
 use std::sync::atomic::{AtomicUsize, Ordering};
@@ -176,12 +178,21 @@ pub fn render(program: &Path, source: &str, res_stmt: &Stmt) -> Result<Option<Fl
     Ok(region(drawing.loops))
 }
 
-/// `text(...)`: its glyphs as polygons, `None` when it draws nothing.
-pub fn text(stmt: &Stmt) -> Result<Option<Flat>, CsgError> {
+/// Drawings already made, by their `.scad` source.
+pub type TextCache = HashMap<String, Option<Flat>>;
+
+/// `text(...)`: its glyphs as polygons, `None` when it draws nothing; a text drawn before (same
+/// arguments) comes from `cache`.
+pub fn text(stmt: &Stmt, cache: &mut TextCache) -> Result<Option<Flat>, CsgError> {
     let located = |e: TextError| stmt.error(e.to_string());
+    let source = scad_source(stmt).map_err(located)?;
+    if let Some(done) = cache.get(&source) {
+        return Ok(done.clone());
+    }
     let program = find_openscad()
         .ok_or(TextError::NoOpenScad)
         .map_err(located)?;
-    let source = scad_source(stmt).map_err(located)?;
-    render(&program, &source, stmt).map_err(located)
+    let drawn = render(&program, &source, stmt).map_err(located)?;
+    cache.insert(source, drawn.clone());
+    Ok(drawn)
 }
