@@ -85,9 +85,10 @@ impl<'a> Scanner<'a> {
             };
             let start = self.pos + offset;
             let rest = &self.text[start..];
+            let markup = matches!(rest.as_bytes().get(1), Some(b'!' | b'?'));
             let skip = [("<!--", "-->"), ("<![CDATA[", "]]>"), ("<?", "?>")]
                 .into_iter()
-                .find(|(open, _)| rest.starts_with(open));
+                .find(|(open, _)| markup && rest.starts_with(open));
             if let Some((open, close)) = skip {
                 let Some(end) = rest[open.len()..].find(close) else {
                     return Err(self.error(start, &format!("unterminated {open}")));
