@@ -489,3 +489,24 @@ fn hostile_3mf_and_glb_exit_2_with_located_messages() {
         }
     }
 }
+
+#[test]
+fn repair_text_has_a_verdict_before_and_after() {
+    let dir = tempfile::tempdir().unwrap();
+    let (_, mesh, _, _) = suite().remove(0);
+    let input = write(dir.path(), "soup", &mesh);
+    let out = dir.path().join("fixed.off");
+    let o = solidkit(&["repair", path_str(&input), "-o", path_str(&out)]);
+    assert_eq!(o.status.code(), Some(0));
+    let text = String::from_utf8_lossy(&o.stdout);
+    let verdicts: Vec<&str> = text
+        .lines()
+        .filter(|l| l.starts_with("verdict: "))
+        .collect();
+    assert_eq!(verdicts.len(), 2, "{text}");
+    assert!(verdicts[0].starts_with("verdict: NOT a solid: "), "{text}");
+    assert_eq!(
+        verdicts[1],
+        "verdict: closed oriented 2-manifold, no self-intersections"
+    );
+}

@@ -375,3 +375,14 @@ fn expansion_bombs_are_refused_before_copying() {
         .to_string();
     assert!(e.contains("expands to more than"), "{e}");
 }
+
+#[test]
+fn deeply_nested_glb_extras_are_skipped_without_recursion() {
+    let deep = format!("{}{}", "[".repeat(100_000), "]".repeat(100_000));
+    let json = strip_json(r#"[{"mesh":0}]"#, &format!(",\"extras\":{deep}"));
+    let m = read_mesh_bytes(&glb(&json, &strip_bin()), MeshFormat::Glb, "d.glb").unwrap();
+    assert_eq!(m.triangles.len(), 2);
+    let json = strip_json(&format!("[{{\"mesh\":0,\"extras\":{deep}}}]"), "");
+    let m = read_mesh_bytes(&glb(&json, &strip_bin()), MeshFormat::Glb, "d.glb").unwrap();
+    assert_eq!(m.triangles.len(), 2);
+}

@@ -75,6 +75,7 @@ pub fn run(a: &RepairArgs) -> Result<u8> {
         outln!("{}", serde_json::to_string_pretty(&v)?)?;
     } else {
         outln!("== before: {name}")?;
+        outln!("verdict: {}", before.verdict())?;
         out!("{}", before.to_text())?;
         out!("{}", changes_text(&counts, weld))?;
         if let Some(r) = &rebuilt {
@@ -92,6 +93,7 @@ pub fn run(a: &RepairArgs) -> Result<u8> {
             )?;
         }
         outln!("== after ({})", mode_name(a.mode))?;
+        outln!("verdict: {}", after.verdict())?;
         out!("{}", after.to_text())?;
         write_mesh(&a.output, result)?;
         outln!("wrote: {}", a.output.display())?;
