@@ -28,8 +28,9 @@ pub fn encode_mesh(
 }
 
 /// The mesh a reader of `bytes` (the encoding of `mesh` as `format`) gets: read back from the
-/// bytes for the formats solidkit reads, `mesh` with positions rounded to `f32` for GLB, and
-/// `mesh` itself for 3MF (exact decimal coordinates).
+/// bytes for STL, OBJ, PLY and OFF; without parsing, `mesh` with positions rounded to `f32` for
+/// GLB and `mesh` itself for 3MF (exact decimal coordinates), which is what the 3MF and GLB
+/// readers give for these bytes (the I/O tests check it).
 pub fn stored_mesh(
     bytes: &[u8],
     mesh: &IndexedMesh,
