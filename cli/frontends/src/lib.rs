@@ -10,6 +10,8 @@
 //! - [`rhai`]: Rhai scripts with every primitive, operation and transform of the kernel, run in a
 //!   sandbox (operation, depth, size, time and tree-size limits; no modules, `eval` or `sleep`).
 //!   What a script prints goes to a sink the caller gives, never to the process's own output.
+//! - [`scad`]: OpenSCAD's `.scad` files, exported to `.csg` by the installed OpenSCAD
+//!   ([`openscad`] runs it in a private temporary folder with a time limit).
 //! - [`csg`]: OpenSCAD's flattened `.csg` trees with OpenSCAD's modifiers and lenient rules;
 //!   round primitives exact or faceted as OpenSCAD does ([`csg::Facets`]).
 //!
@@ -27,4 +29,6 @@
 
 pub mod csg;
 pub mod load;
+pub mod openscad;
 pub mod rhai;
+pub mod scad;

@@ -28,6 +28,9 @@ pub enum Format {
     Rhai,
     /// An OpenSCAD `.csg` file, see [`crate::csg`].
     Csg,
+    /// An OpenSCAD `.scad` file, exported to `.csg` by the installed OpenSCAD ([`crate::scad`]);
+    /// only from a file ([`load_path`]).
+    Scad,
 }
 
 impl Format {
@@ -37,6 +40,7 @@ impl Format {
             "json" => Some(Format::Json),
             "rhai" => Some(Format::Rhai),
             "csg" => Some(Format::Csg),
+            "scad" => Some(Format::Scad),
             _ => None,
         }
     }
@@ -72,6 +76,8 @@ pub struct LoadOptions {
     /// The sandbox limits of Rhai scripts and where their `print` and `debug` output goes
     /// (default: discarded).
     pub script: ScriptOptions,
+    /// Variable definitions `name=value` for `.scad` files (OpenSCAD's `-D`).
+    pub defines: Vec<String>,
 }
 
 impl Default for LoadOptions {
@@ -82,6 +88,7 @@ impl Default for LoadOptions {
             base_dir: None,
             max_file_bytes: DEFAULT_MAX_FILE_BYTES,
             script: ScriptOptions::default(),
+            defines: Vec::new(),
         }
     }
 }
@@ -102,9 +109,9 @@ pub struct Loaded {
 #[derive(Debug, thiserror::Error)]
 #[non_exhaustive]
 pub enum LoadError {
-    /// The extension is not `.json`, `.rhai` or `.csg`.
+    /// The extension is not `.json`, `.rhai`, `.csg` or `.scad`.
     #[error(
-        "{name}: unsupported input format '.{extension}' (expected a .json tree, a .rhai script or a .csg file)"
+        "{name}: unsupported input format '.{extension}' (expected a .json tree, a .rhai script, a .csg or a .scad file)"
     )]
     UnsupportedFormat {
         /// The input's name (its path).
@@ -113,7 +120,9 @@ pub enum LoadError {
         extension: String,
     },
     /// The path has no extension (or one that is not UTF-8).
-    #[error("{name}: no file extension (expected a .json tree, a .rhai script or a .csg file)")]
+    #[error(
+        "{name}: no file extension (expected a .json tree, a .rhai script, a .csg or a .scad file)"
+    )]
     NoExtension {
         /// The input's name (its path).
         name: String,
@@ -156,6 +165,22 @@ pub enum LoadError {
         /// Why, with the line and column.
         error: CsgError,
     },
+    /// A `.scad` file that OpenSCAD could not export (or no OpenSCAD), or `.scad` text given to
+    /// [`load_str`].
+    #[error("{name}: {error}")]
+    Scad {
+        /// The input's name (its path).
+        name: String,
+        /// Why.
+        error: crate::scad::ScadError,
+    },
+    /// `.scad` text without a file: OpenSCAD resolves its `include`s and `import`s from the
+    /// file's folder, so only [`load_path`] reads `.scad`.
+    #[error("{name}: .scad text can only be read from a file")]
+    ScadText {
+        /// The input's name.
+        name: String,
+    },
     /// The solid was built but is not valid (a parameter out of range, ...).
     #[error("{name}: {error}")]
     Invalid {
@@ -173,6 +198,24 @@ pub fn load_path(path: &Path, options: &LoadOptions) -> Result<Loaded, LoadError
     let access = file_access(FileAccess::for_tree_file(path), options)?;
     let bytes = read_regular_file(path, options.max_file_bytes).map_err(LoadError::Read)?;
     let name = path.display().to_string();
+    if format == Format::Scad {
+        let exported = crate::scad::export(path, &options.defines, options.max_file_bytes)
+            .map_err(|error| LoadError::Scad {
+                name: name.clone(),
+                error,
+            })?;
+        // Places in the exported text are named after the .scad file they come from.
+        let csg_name = format!("{name} (exported .csg)");
+        let mut loaded = load_text(&exported.csg, Format::Csg, &csg_name, access, options)?;
+        let mut warnings: Vec<String> = exported
+            .warnings
+            .iter()
+            .map(|w| format!("{name}: {w}"))
+            .collect();
+        warnings.append(&mut loaded.warnings);
+        loaded.warnings = warnings;
+        return Ok(loaded);
+    }
     let text = String::from_utf8(bytes).map_err(|e| LoadError::Utf8 {
         name: name.clone(),
         valid_up_to: e.utf8_error().valid_up_to(),
@@ -219,6 +262,11 @@ fn load_text(
     let resolver = FileMeshResolver::with_access(access);
     let mut warnings = Vec::new();
     let solid = match format {
+        Format::Scad => {
+            return Err(LoadError::ScadText {
+                name: name.to_string(),
+            });
+        }
         Format::Rhai => rhai::eval_with_options(text, name, Arc::new(resolver), &options.script)
             .map_err(LoadError::Script)?,
         Format::Csg => {
@@ -258,8 +306,8 @@ mod tests {
         let e = Format::from_path(Path::new("model.STL")).unwrap_err();
         assert_eq!(
             e.to_string(),
-            "model.STL: unsupported input format '.stl' (expected a .json tree, a .rhai script \
-             or a .csg file)"
+            "model.STL: unsupported input format '.stl' (expected a .json tree, a .rhai script, \
+             a .csg or a .scad file)"
         );
         let e = Format::from_path(Path::new("model")).unwrap_err();
         assert!(matches!(e, LoadError::NoExtension { .. }), "{e}");
@@ -325,5 +373,56 @@ mod tests {
                 .starts_with("--allow-path /no/such/solidkit/folder"),
             "{e}"
         );
+    }
+
+    /// The installed OpenSCAD, or `None` (the `.scad` tests then only check the message).
+    fn openscad() -> Option<std::path::PathBuf> {
+        crate::openscad::find().ok()
+    }
+
+    #[test]
+    fn scad_files_go_through_openscad_with_defines_and_warnings() {
+        let dir = std::env::temp_dir().join(format!("solidkit-scad-test-{}", std::process::id()));
+        std::fs::create_dir_all(&dir).unwrap();
+        let file = dir.join("part.scad");
+        std::fs::write(
+            &file,
+            "size = 1;\nmodule part(s) { cube([s, 2 * s, 3]); }\npart(size);\n\
+             translate([10, 0, 0]) sphere(r = 1);\n",
+        )
+        .unwrap();
+        let mut options = LoadOptions::default();
+        let loaded = load_path(&file, &options);
+        if openscad().is_none() {
+            let e = loaded.unwrap_err().to_string();
+            assert!(e.contains("openscad is not installed"), "{e}");
+            return;
+        }
+        let loaded = loaded.unwrap();
+        let b = loaded.solid.bbox();
+        assert_eq!(b.min.to_array(), [0.0, -1.0, -1.0]);
+        assert_eq!(b.max.to_array(), [11.0, 2.0, 3.0]);
+        options.defines = vec!["size=2".into()];
+        let b = load_path(&file, &options).unwrap().solid.bbox();
+        assert_eq!(b.max.to_array(), [11.0, 4.0, 3.0]);
+        options.defines = vec!["=2".into()];
+        let e = load_path(&file, &options).unwrap_err().to_string();
+        assert!(e.contains("expected name=value"), "{e}");
+        // OpenSCAD's own errors come back with the file's name.
+        std::fs::write(&file, "cube([1, 1, 1]\n").unwrap();
+        let e = load_path(&file, &LoadOptions::default())
+            .unwrap_err()
+            .to_string();
+        assert!(
+            e.starts_with(&format!("{}: openscad:", file.display())),
+            "{e}"
+        );
+        let _ = std::fs::remove_dir_all(&dir);
+    }
+
+    #[test]
+    fn scad_text_needs_a_file() {
+        let e = load_str("cube(1);", Format::Scad, "m.scad", &LoadOptions::default());
+        assert!(matches!(e, Err(LoadError::ScadText { .. })));
     }
 }

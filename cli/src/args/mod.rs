@@ -212,6 +212,9 @@ pub struct MeshArgs {
     /// symbolic link leading out, no absolute paths.
     #[arg(long, value_name = "DIR")]
     pub allow_path: Vec<PathBuf>,
+    /// A variable for `.scad` inputs, passed to OpenSCAD as `-D NAME=VALUE` (repeatable).
+    #[arg(short = 'D', value_name = "NAME=VALUE")]
+    pub define: Vec<String>,
     /// Also write a PNG of the mesh (iso view, 1024x1024).
     #[arg(long, value_name = "PNG")]
     pub preview: Option<PathBuf>,
@@ -316,6 +319,9 @@ pub struct ConvertArgs {
     /// symbolic link leading out, no absolute paths.
     #[arg(long, value_name = "DIR")]
     pub allow_path: Vec<PathBuf>,
+    /// A variable for `.scad` inputs, passed to OpenSCAD as `-D NAME=VALUE` (repeatable).
+    #[arg(short = 'D', value_name = "NAME=VALUE")]
+    pub define: Vec<String>,
 }
 
 /// Arguments of `solidkit bench`.

@@ -35,6 +35,9 @@ pub struct RenderArgs {
     /// Let the files the input names (`mesh` and `png` paths) come from DIR too (repeatable).
     #[arg(long, value_name = "DIR")]
     pub allow_path: Vec<PathBuf>,
+    /// A variable for `.scad` inputs, passed to OpenSCAD as `-D NAME=VALUE` (repeatable).
+    #[arg(short = 'D', value_name = "NAME=VALUE")]
+    pub define: Vec<String>,
 }
 
 /// `WxH`, checked against the pixel cap before anything is allocated.

@@ -18,7 +18,8 @@ use std::time::Instant;
 /// it is inside somewhere.
 pub fn run(a: &MeshArgs) -> Result<u8> {
     let input = a.input.display();
-    let (solid, mut warnings) = input::load_solid_warned(&a.input, a.facets.into(), &a.allow_path)?;
+    let (solid, mut warnings) =
+        input::load_solid_warned(&a.input, a.facets.into(), &a.allow_path, &a.define)?;
     let domain = match a.bounds {
         Some(b) => Domain::Clip(Aabb::new(
             DVec3::new(b[0], b[1], b[2]),

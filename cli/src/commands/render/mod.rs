@@ -22,7 +22,7 @@ pub fn run(a: &RenderArgs) -> Result<u8> {
     let start = Instant::now();
     let image = if is_solid(&a.input) {
         let (mut solid, warnings) =
-            input::load_solid_warned(&a.input, a.facets.into(), &a.allow_path)?;
+            input::load_solid_warned(&a.input, a.facets.into(), &a.allow_path, &a.define)?;
         for w in &warnings {
             crate::output::errln!("warning: {}", crate::escape::one_line(w));
         }
