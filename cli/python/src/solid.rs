@@ -237,16 +237,19 @@ fn options(
     Ok(o)
 }
 
-/// Reads a solid from a `.json` tree, a `.rhai` script or an OpenSCAD `.csg` file (by its
-/// extension). Files it names must lie in its folder or in one of `allow`.
-#[pyfunction(signature = (path, *, facets = "exact", allow = None))]
+/// Reads a solid from a `.json` tree, a `.rhai` script, an OpenSCAD `.csg` file or a `.scad`
+/// file (through the installed OpenSCAD, with `defines` as its `-D name=value`), by extension.
+/// Files it names must lie in its folder or in one of `allow`.
+#[pyfunction(signature = (path, *, facets = "exact", allow = None, defines = None))]
 fn load(
     py: Python<'_>,
     path: PathBuf,
     facets: &str,
     allow: Option<Vec<PathBuf>>,
+    defines: Option<Vec<String>>,
 ) -> PyResult<PySolid> {
-    let o = options(facets, allow, None)?;
+    let mut o = options(facets, allow, None)?;
+    o.defines = defines.unwrap_or_default();
     let loaded = py.detach(|| load_path(&path, &o)).map_err(errors::load)?;
     let s = PySolid {
         solid: loaded.solid,

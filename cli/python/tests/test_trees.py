@@ -105,3 +105,16 @@ def test_files_named_by_a_tree_stay_in_its_folder(tmp_path):
     with pytest.raises(sk.LoadError, match="outside"):
         sk.load(tree)
     assert sk.load(tree, allow=[tmp_path]).bbox[1][0] > 0.9
+
+
+def test_scad_files_load_through_openscad_with_defines(tmp_path):
+    import shutil
+
+    f = tmp_path / "m.scad"
+    f.write_text("s = 1;\ncube([s, 2, 3]);\n")
+    if shutil.which("openscad") is None:
+        with pytest.raises(sk.LoadError, match="openscad is not installed"):
+            sk.load(f)
+        return
+    assert list(sk.load(f).bbox[1]) == [1.0, 2.0, 3.0]
+    assert list(sk.load(f, defines=["s=5"]).bbox[1]) == [5.0, 2.0, 3.0]

@@ -181,8 +181,13 @@ def load(
     *,
     facets: Literal["exact", "openscad"] = "exact",
     allow: Optional[Sequence[Path]] = None,
+    defines: Optional[Sequence[str]] = None,
 ) -> Solid:
-    """A solid from a .json tree, .rhai script or OpenSCAD .csg file (by extension)."""
+    """A solid from a .json tree, .rhai script, OpenSCAD .csg file or .scad file (by extension).
+
+    ``.scad`` files go through the installed OpenSCAD, with ``defines`` (``"name=value"``) as its
+    ``-D`` options.
+    """
 
 def from_json(
     text: str,
