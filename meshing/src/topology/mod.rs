@@ -44,8 +44,8 @@ use std::borrow::Cow;
 use rayon::prelude::*;
 
 pub use defects::{DefectItems, MAX_DEFECT_PAIRS};
-pub use verdict::{MAX_LOCATED, OffenderPositions};
 pub(crate) use edges::{CornerLoops, EdgeKind, EdgeTable};
+pub use verdict::{MAX_LOCATED, OffenderPositions};
 pub(crate) use vertices::fan_counts;
 
 use crate::IndexedMesh;

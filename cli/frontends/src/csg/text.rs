@@ -11,12 +11,11 @@ use super::dxf::{self, DxfOptions};
 use super::error::CsgError;
 use super::flat::Flat;
 use super::parser::{Stmt, Value};
+use crate::openscad::{self, RunError, TempDir};
 use glam::DVec2;
 use std::collections::HashMap;
 use std::path::{Path, PathBuf};
-use std::process::{Command, Stdio};
-use std::sync::atomic::{AtomicUsize, Ordering};
-use std::time::{Duration, Instant};
+use std::time::Duration;
 
 /// How long OpenSCAD may take to render one `text`.
 pub const TIMEOUT: Duration = Duration::from_secs(60);
@@ -47,12 +46,9 @@ pub enum TextError {
     Drawing(String),
 }
 
-/// `openscad` on `PATH`, if any.
+/// The OpenSCAD to run, if any (see [`crate::openscad::find`]).
 pub fn find_openscad() -> Option<PathBuf> {
-    let path = std::env::var_os("PATH")?;
-    std::env::split_paths(&path)
-        .map(|d| d.join("openscad"))
-        .find(|p| p.is_file())
+    openscad::find().ok()
 }
 
 /// An OpenSCAD string literal.
@@ -96,60 +92,24 @@ pub fn scad_source(stmt: &Stmt) -> Result<String, TextError> {
     Ok(format!("text({});\n", args.join(", ")))
 }
 
-/// A private temporary folder, removed when dropped.
-struct TempDir(PathBuf);
-
-impl TempDir {
-    fn new() -> std::io::Result<TempDir> {
-        static NEXT: AtomicUsize = AtomicUsize::new(0);
-        let base = std::env::temp_dir();
-        loop {
-            let n = NEXT.fetch_add(1, Ordering::Relaxed);
-            let dir = base.join(format!("solidkit-text-{}-{n}", std::process::id()));
-            match std::fs::create_dir(&dir) {
-                Ok(()) => return Ok(TempDir(dir)),
-                Err(e) if e.kind() == std::io::ErrorKind::AlreadyExists => continue,
-                Err(e) => return Err(e),
-            }
-        }
-    }
-}
-
-impl Drop for TempDir {
-    fn drop(&mut self) {
-        let _ = std::fs::remove_dir_all(&self.0);
-    }
-}
-
 /// The loops of `source` drawn by the OpenSCAD at `program` (no loops: empty text).
 pub fn render(program: &Path, source: &str, res_stmt: &Stmt) -> Result<Option<Flat>, TextError> {
-    let dir = TempDir::new()?;
-    let scad = dir.0.join("text.scad");
-    let out = dir.0.join("text.dxf");
-    let log = dir.0.join("log.txt");
+    let dir = TempDir::new("text")?;
+    let scad = dir.path().join("text.scad");
+    let out = dir.path().join("text.dxf");
     std::fs::write(&scad, source)?;
-    let mut child = Command::new(program)
-        .arg("-o")
-        .arg(&out)
-        .arg(&scad)
-        .stdin(Stdio::null())
-        .stdout(Stdio::null())
-        .stderr(std::fs::File::create(&log)?)
-        .spawn()
-        .map_err(|e| TextError::Failed(format!("{}: {e}", program.display())))?;
-    let start = Instant::now();
-    let status = loop {
-        if let Some(status) = child.try_wait()? {
-            break status;
-        }
-        if start.elapsed() > TIMEOUT {
-            let _ = child.kill();
-            let _ = child.wait();
-            return Err(TextError::Timeout);
-        }
-        std::thread::sleep(Duration::from_millis(10));
-    };
-    let messages = std::fs::read_to_string(&log).unwrap_or_default();
+    let args = [
+        "-o".into(),
+        out.clone().into_os_string(),
+        scad.into_os_string(),
+    ];
+    let finished = openscad::run(program, &args, &dir, TIMEOUT).map_err(|e| match e {
+        RunError::Timeout(_) => TextError::Timeout,
+        RunError::Io(e) => TextError::Io(e),
+        RunError::Missing => TextError::NoOpenScad,
+        e => TextError::Failed(e.to_string()),
+    })?;
+    let (status, messages) = (finished.status, &finished.messages);
     // An empty text is an empty top level (2021.01 says "not a 2D object").
     if messages.contains("top level object is empty")
         || messages.contains("top level object is not a 2D object")
@@ -157,12 +117,10 @@ pub fn render(program: &Path, source: &str, res_stmt: &Stmt) -> Result<Option<Fl
         return Ok(None);
     }
     if !status.success() || !out.is_file() {
-        let last = messages
-            .lines()
-            .rev()
-            .find(|l| !l.trim().is_empty())
-            .unwrap_or("no message");
-        return Err(TextError::Failed(format!("{status}: {}", last.trim())));
+        return Err(TextError::Failed(format!(
+            "{status}: {}",
+            finished.last_message()
+        )));
     }
     let text = std::fs::read_to_string(&out)?;
     let res = res_stmt
