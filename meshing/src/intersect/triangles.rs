@@ -11,7 +11,8 @@
 //! what they share:
 //! - one shared vertex `v` (triangles `v a b`, `v c d`): the intersection, if more than `v`, is a
 //!   segment from `v` whose far end lies on `ab` or `cd`, so they do exactly when `ab` meets the
-//!   second triangle or `cd` the first (this also catches coplanar overlapping wedges);
+//!   second triangle or `cd` the first; coplanar, exactly when their angular sectors at `v` share
+//!   a ray (four 2D ray tests instead of the segment tests, which meet exact zeros at `v`);
 //! - a shared edge `uw` (third vertices `a`, `b`): in different planes they meet only along `uw`;
 //!   coplanar, they overlap when `a` and `b` lie on the same side of `uw` (a fold-back);
 //! - three shared vertices: the same triangle twice, which overlaps itself.
@@ -148,7 +149,7 @@ fn decide(ti: [u32; 3], i: &Tri, tj: [u32; 3], j: &Tri, filter: bool) -> bool {
             if filter && filter::separated_at_vertex(i.p[ki], [a, b], [c, d]) {
                 return false;
             }
-            meet_at_vertex(i, [a, b], j, [c, d])
+            meet_at_vertex(i.p[ki], i, [a, b], j, [c, d])
         }
         2 => {
             let ki = shared.iter().position(Option::is_none).unwrap_or(0);
@@ -165,14 +166,80 @@ fn decide(ti: [u32; 3], i: &Tri, tj: [u32; 3], j: &Tri, filter: bool) -> bool {
 }
 
 /// Triangles `i = v a b` and `j = v c d` meet beyond `v` when `ab` meets `j` or `cd` meets `i`.
-/// When `a` and `b` both lie in `j`'s plane the triangles are coplanar and both tests are 2D
-/// (no further orientation test, each of which would be an exact zero: the slow path).
-fn meet_at_vertex(i: &Tri, [a, b]: [DVec3; 2], j: &Tri, [c, d]: [DVec3; 2]) -> bool {
+/// When `a` and `b` both lie in `j`'s plane the triangles are coplanar: see [`sectors_meet`].
+fn meet_at_vertex(v: DVec3, i: &Tri, [a, b]: [DVec3; 2], j: &Tri, [c, d]: [DVec3; 2]) -> bool {
     let [p, q, r] = j.p;
     let (sa, sb) = (orient(p, q, r, a), orient(p, q, r, b));
     if sa == 0 && sb == 0 {
-        return j.meets_coplanar_segment(a, b) || i.meets_coplanar_segment(c, d);
+        return sectors_meet(i.proj, v, [a, b], [c, d]);
     }
     let ab_meets_j = sa != sb || sa == 0;
     (ab_meets_j && j.meets_segment(a, b)) || i.meets_segment(c, d)
+}
+
+/// Coplanar triangles `v a b` and `v c d` meet beyond their one shared vertex `v` exactly when
+/// their angular sectors at `v` share a ray: near `v` each triangle is its sector, and a common
+/// point `p ≠ v` puts the whole segment `vp` (convexity) in both. Two convex sectors share a ray
+/// exactly when a boundary ray of one lies in the other, so four ray tests of two exact 2D
+/// orientations each decide it (`proj` keeps the plane non-degenerate, so signs are faithful).
+fn sectors_meet(proj: Projection, v: DVec3, [a, b]: [DVec3; 2], [c, d]: [DVec3; 2]) -> bool {
+    // The closed sector from ray `vx` to ray `vy` (less than a half-turn, as in a triangle)
+    // holds ray `vr` when `r` is on the inner side of both bounding lines.
+    let holds = |x: DVec3, y: DVec3, r: DVec3| {
+        let o = proj.orient(v, x, y);
+        proj.orient(v, x, r) * o >= 0 && proj.orient(v, r, y) * o >= 0
+    };
+    holds(a, b, c) || holds(a, b, d) || holds(c, d, a) || holds(c, d, b)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A small deterministic generator (SplitMix64) of lattice coordinates.
+    struct Rng(u64);
+
+    impl Rng {
+        fn below(&mut self, n: i64) -> i64 {
+            self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
+            let mut z = self.0;
+            z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
+            z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
+            ((z ^ (z >> 31)) % n as u64) as i64
+        }
+    }
+
+    /// The sector test agrees with the segment tests it replaced (an edge of each triangle
+    /// against the other), on coplanar pairs sharing one vertex drawn from a small lattice in an
+    /// axis plane and in a tilted plane, where collinear rays and exact zeros are common.
+    #[test]
+    fn sectors_agree_with_the_segment_tests_on_lattice_fans() {
+        let mut rng = Rng(7);
+        let planes: [fn(i64, i64) -> DVec3; 2] = [
+            |x, y| DVec3::new(x as f64, y as f64, 0.0),
+            |x, y| DVec3::new(x as f64, y as f64, -(x + y) as f64),
+        ];
+        let (mut meeting, mut apart) = (0, 0);
+        for plane in planes {
+            for _ in 0..20_000 {
+                let mut p = || plane(rng.below(5) - 2, rng.below(5) - 2);
+                let (v, a, b, c, d) = (p(), p(), p(), p(), p());
+                let (Some(i), Some(j)) = (Tri::new([v, a, b]), Tri::new([v, c, d])) else {
+                    continue;
+                };
+                if [a, b].iter().any(|x| *x == c || *x == d) {
+                    continue; // more than one shared vertex
+                }
+                let old = j.meets_coplanar_segment(a, b) || i.meets_coplanar_segment(c, d);
+                let new = sectors_meet(i.proj, v, [a, b], [c, d]);
+                assert_eq!(old, new, "v {v} a {a} b {b} c {c} d {d}");
+                if new {
+                    meeting += 1;
+                } else {
+                    apart += 1;
+                }
+            }
+        }
+        assert!(meeting > 1000 && apart > 1000, "{meeting} {apart}");
+    }
 }
