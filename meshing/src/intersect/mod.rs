@@ -104,12 +104,14 @@ pub fn self_intersections(
     if let Some(vertex) = bad {
         return Err(MeasureError::NonFiniteVertex { vertex });
     }
-    // Degenerate (exactly collinear) triangles take no part. The corners are read again below
-    // rather than kept here: a vector of every triangle's corners was the largest allocation.
-    let mut keep: Vec<bool> = ids
+    // Degenerate (exactly collinear) triangles take no part. Each triangle's projection is kept
+    // (two bytes) rather than its corners, which are read again below: a vector of every
+    // triangle's corners was the largest allocation.
+    let projections: Vec<Option<Projection>> = ids
         .par_iter()
-        .map(|&t| Projection::of(mesh.triangle_positions(t as usize)).is_some())
+        .map(|&t| Projection::of(mesh.triangle_positions(t as usize)))
         .collect();
+    let mut keep: Vec<bool> = projections.par_iter().map(Option::is_some).collect();
     let keys: Vec<[u32; 3]> = ids
         .par_iter()
         .map(|&t| {
@@ -136,16 +138,20 @@ pub fn self_intersections(
     let items: Vec<Item> = order
         .par_iter()
         .filter_map(|&o| {
-            let id = ids[active[o as usize] as usize];
-            Tri::new(mesh.triangle_positions(id as usize)).map(|tri| Item {
+            let k = active[o as usize] as usize;
+            let id = ids[k];
+            projections[k].map(|proj| Item {
                 id,
                 vertices: mesh.triangles[id as usize],
-                tri,
+                tri: Tri {
+                    p: mesh.triangle_positions(id as usize),
+                    proj,
+                },
             })
         })
         .collect();
     let boxes: Vec<Box32> = order.par_iter().map(|&o| boxes[o as usize]).collect();
-    drop((active, order));
+    drop((active, order, projections));
     let tree = LeafTree::new(&boxes);
     let total = (0..tree.leaf_count())
         .into_par_iter()

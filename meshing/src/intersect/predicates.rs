@@ -23,9 +23,10 @@ pub(crate) fn orient(a: DVec3, b: DVec3, c: DVec3, d: DVec3) -> i8 {
     sign(orient3d(k(a), k(b), k(c), k(d)))
 }
 
-/// A projection onto a coordinate plane: the two kept axes.
+/// A projection onto a coordinate plane: the two kept axes (bytes: the search keeps one per
+/// triangle).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub(crate) struct Projection([usize; 2]);
+pub(crate) struct Projection([u8; 2]);
 
 impl Projection {
     /// A projection under which the triangle keeps a non-zero area, preferring the axis its
@@ -48,7 +49,12 @@ impl Projection {
     /// The sign of the projected triangle `abc` (1: counter-clockwise). Three points with one
     /// projected coordinate equal are collinear: exactly 0, without the adaptive stages.
     pub(crate) fn orient(self, a: DVec3, b: DVec3, c: DVec3) -> i8 {
-        if self.0.iter().any(|&k| a[k] == b[k] && a[k] == c[k]) {
+        if self
+            .0
+            .iter()
+            .map(|&k| usize::from(k))
+            .any(|k| a[k] == b[k] && a[k] == c[k])
+        {
             return 0;
         }
         sign(orient2d(self.coord(a), self.coord(b), self.coord(c)))
@@ -57,8 +63,8 @@ impl Projection {
     /// The projected coordinates of `p`.
     fn coord(self, p: DVec3) -> Coord<f64> {
         Coord {
-            x: p[self.0[0]],
-            y: p[self.0[1]],
+            x: p[usize::from(self.0[0])],
+            y: p[usize::from(self.0[1])],
         }
     }
 
@@ -67,7 +73,8 @@ impl Projection {
     pub(crate) fn within(self, p: DVec3, a: DVec3, b: DVec3) -> bool {
         self.0
             .iter()
-            .all(|&k| p[k] >= a[k].min(b[k]) && p[k] <= a[k].max(b[k]))
+            .map(|&k| usize::from(k))
+            .all(|k| p[k] >= a[k].min(b[k]) && p[k] <= a[k].max(b[k]))
     }
 }
 
