@@ -240,8 +240,8 @@ fn bad_input_fails_cleanly_with_exit_two() {
         None,
     );
     assert_clean_failure(
-        &["mesh", path_str(&d.join("model.scad"))],
-        "model.scad",
+        &["mesh", path_str(&d.join("model.step"))],
+        "model.step",
         "unsupported",
         None,
     );
