@@ -93,22 +93,20 @@ pub fn eval<'py>(
         let g = PyArray1::from_vec(py, grads).reshape([n, 3])?;
         return Ok(PyTuple::new(py, [v.into_any(), g.into_any()])?.into_any());
     }
-    if double {
-        let values = detached(py, threads, || {
-            let mut values = vec![0.0f64; n];
-            values
-                .par_chunks_mut(CHUNK)
-                .zip(flat.par_chunks(3 * CHUNK))
-                .for_each_init(Default::default, |scratch, (v, p)| {
-                    for (o, c) in v.iter_mut().zip(p.chunks_exact(3)) {
-                        *o = program.value_with(glam::DVec3::new(c[0], c[1], c[2]), scratch);
-                    }
-                });
-            values
-        })?;
-        return Ok(PyArray1::from_vec(py, values).into_any());
-    }
-    unreachable!("the single-precision path returned above")
+    // Double precision, without gradients.
+    let values = detached(py, threads, || {
+        let mut values = vec![0.0f64; n];
+        values
+            .par_chunks_mut(CHUNK)
+            .zip(flat.par_chunks(3 * CHUNK))
+            .for_each_init(Default::default, |scratch, (v, p)| {
+                for (o, c) in v.iter_mut().zip(p.chunks_exact(3)) {
+                    *o = program.value_with(glam::DVec3::new(c[0], c[1], c[2]), scratch);
+                }
+            });
+        values
+    })?;
+    Ok(PyArray1::from_vec(py, values).into_any())
 }
 
 /// Single-precision values of `program` at `flat` into `out` (checked) or a new array.
