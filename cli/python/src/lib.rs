@@ -8,10 +8,12 @@
 //! The Python layer (`python/solidkit/__init__.py`) re-exports this module, adds `node()` for
 //! every other family of the JSON tree format and documents the whole API in its type stubs.
 
+mod deinterleave;
 mod errors;
 mod field;
 mod mesh;
 mod meshing;
+mod recycle;
 mod run;
 mod solid;
 mod suite;

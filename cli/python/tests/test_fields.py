@@ -34,6 +34,33 @@ def test_single_and_double_agree_on_a_real_tree_and_thread_counts_agree():
     assert np.array_equal(out, v32)
 
 
+def test_recycled_result_buffers_never_alias_a_live_array():
+    # Results of 4 MB and more come from a pool of buffers freed by earlier results: a live
+    # array must keep its values while later calls run, and a reused buffer must be fully
+    # rewritten (smaller calls than the buffer included).
+    s = sk.sphere(1)
+    big, small = points(1_200_000, 3), points(700_000, 4)
+    kept = {}
+    for round in range(3):
+        for name, p in (("big", big), ("small", small)):
+            for kind in ("f32", "f64", "grad"):
+                if kind == "f32":
+                    r = s.eval(p)
+                elif kind == "f64":
+                    r = s.eval(p, double=True)
+                else:
+                    r = s.eval(p, gradients=True)[1]
+                if round == 0:
+                    kept[name, kind] = (r, r.copy())
+                else:
+                    np.testing.assert_array_equal(r, kept[name, kind][1])
+                del r
+    for live, expected in kept.values():
+        np.testing.assert_array_equal(live, expected)
+    exact = np.linalg.norm(small, axis=1) - 1.0
+    np.testing.assert_allclose(kept["small", "f64"][1], exact, atol=1e-12)
+
+
 def test_gradients_of_a_sphere_point_outward():
     p = points(1000, 2)
     v, g = sk.sphere(1).eval(p, gradients=True)

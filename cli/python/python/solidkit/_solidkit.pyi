@@ -74,7 +74,8 @@ class Solid:
         float32 values from the meshers' single-precision batch evaluator (into ``out`` when
         given), float64 with ``double=True``; with ``gradients=True`` a tuple ``(values,
         gradients)`` in double precision (N and N x 3). Runs on ``threads`` threads (default:
-        all cores) with the GIL released.
+        all cores) with the GIL released. Large results reuse the memory of earlier results
+        that have been freed.
         """
     def mesh(
         self,
