@@ -338,7 +338,8 @@ pub struct BenchArgs {
     /// Runs per case (1 to 1000); the table shows the median, minimum and maximum time.
     #[arg(long, default_value_t = 5, value_parser = clap::value_parser!(u32).range(1..=1000))]
     pub repeat: u32,
-    /// Measure the raw single-thread evaluation rates (points/s, boxes/s) instead of meshing.
+    /// Measure the raw single-thread evaluation rates (points/s, boxes/s) instead of meshing;
+    /// `--model` then picks among sphere, gyroid-sphere and many-8456.
     #[arg(long)]
     pub raw: bool,
     /// Run the cases in this process (faster to start; no peak memory).

@@ -32,7 +32,7 @@ use std::process::Command;
 /// Runs the benchmark; exit code 0, or 1 when a mesh failed its check.
 pub fn run(a: &BenchArgs) -> Result<u8> {
     if a.raw {
-        let rows = raw::run(&raw::RawSizes::default(), a.repeat)?;
+        let rows = raw::run(&raw::RawSizes::default(), a.repeat, &a.model)?;
         if a.json {
             outln!("{}", serde_json::to_string_pretty(&json!({ "raw": rows }))?)?;
         } else {

@@ -5,7 +5,7 @@
 //! second of evaluation inside the leaf bricks, one thread).
 
 use super::case::median;
-use anyhow::Result;
+use anyhow::{Result, bail};
 use serde::Serialize;
 use solidkit_kernel::models::Model;
 use solidkit_kernel::models::workload::{lattice_points, octree_boxes};
@@ -81,14 +81,28 @@ fn row(kind: &'static str, model: &Model, len: usize, count: usize, times: Vec<f
     }
 }
 
-/// Measures the raw rates on this thread, `repeat` runs each.
-pub fn run(sizes: &RawSizes, repeat: u32) -> Result<Vec<RawRow>> {
+/// The models the raw rates are measured on.
+pub const RAW_MODELS: [&str; 3] = ["sphere", "gyroid-sphere", "many-8456"];
+
+/// Measures the raw rates on this thread, `repeat` runs each, of the models in `only` (all of
+/// [`RAW_MODELS`] when empty; the interval rate is the sphere's, the pruned rate many-8456's).
+pub fn run(sizes: &RawSizes, repeat: u32, only: &[String]) -> Result<Vec<RawRow>> {
+    if let Some(bad) = only.iter().find(|m| !RAW_MODELS.contains(&m.trim())) {
+        bail!(
+            "--raw measures the models {}, not '{bad}'",
+            RAW_MODELS.join(", ")
+        );
+    }
+    let wanted = |name: &str| only.is_empty() || only.iter().any(|m| m.trim() == name);
     let mut rows = Vec::new();
     for (name, count) in [
         ("sphere", sizes.points),
         ("gyroid-sphere", sizes.points),
         ("many-8456", sizes.many_points),
     ] {
+        if !wanted(name) {
+            continue;
+        }
         let model = Model::by_name(name)?;
         let program = model.solid.compile();
         let pts = lattice_points(&model.domain, count);
@@ -100,17 +114,21 @@ pub fn run(sizes: &RawSizes, repeat: u32) -> Result<Vec<RawRow>> {
         });
         rows.push(row("eval", &model, program.len(), count, times));
     }
-    let model = Model::by_name("sphere")?;
-    let program = model.solid.compile();
-    let boxes = octree_boxes(&model.domain, sizes.boxes, 1);
-    let mut scratch = IntervalScratch::default();
-    let times = timed(repeat, || {
-        for b in &boxes {
-            black_box(program.interval_with(black_box(b), &mut scratch));
-        }
-    });
-    rows.push(row("interval", &model, program.len(), sizes.boxes, times));
-    rows.push(pruned_row(sizes.many_resolution)?);
+    if wanted("sphere") {
+        let model = Model::by_name("sphere")?;
+        let program = model.solid.compile();
+        let boxes = octree_boxes(&model.domain, sizes.boxes, 1);
+        let mut scratch = IntervalScratch::default();
+        let times = timed(repeat, || {
+            for b in &boxes {
+                black_box(program.interval_with(black_box(b), &mut scratch));
+            }
+        });
+        rows.push(row("interval", &model, program.len(), sizes.boxes, times));
+    }
+    if wanted("many-8456") {
+        rows.push(pruned_row(sizes.many_resolution)?);
+    }
     Ok(rows)
 }
 
