@@ -5,7 +5,7 @@ mod memory;
 mod render;
 
 pub use r#gen::GenArgs;
-pub use render::{RenderArgs, parse_size, parse_view};
+pub use render::{GalleryArgs, RenderArgs, parse_size, parse_view};
 pub use solidkit_meshing::pipeline::limits::default_max_memory;
 
 use clap::{Parser, Subcommand, ValueEnum};
@@ -50,6 +50,9 @@ pub enum Command {
     /// Render a PNG: a solid ray cast from its field, a mesh file rasterised, or a
     /// cross-section (--section z=C) of a solid.
     Render(RenderArgs),
+    /// Write a gallery page: a picture and the report line of every example in a folder
+    /// (--check: compare with the page there instead, exit 1 on drift).
+    Gallery(GalleryArgs),
     /// Repair a mesh into a closed oriented manifold without self-intersections (weld, clean,
     /// orient, fill holes, split non-manifold vertices; or remesh its winding-number solid),
     /// write it and print the reports before and after; exit 1 if the result is still not one.
@@ -287,6 +290,10 @@ pub struct CheckArgs {
     /// View of the --render image: iso, front, top, side or AZ,EL in degrees.
     #[arg(long, default_value = "iso", value_parser = parse_view, allow_hyphen_values = true)]
     pub view: solidkit_meshing::render::View,
+    /// Also write the offending faces and edges as an ASCII PLY, coloured as in --render (faces
+    /// and `edge` elements with red, green, blue and a class code), for other viewers.
+    #[arg(long, value_name = "PLY")]
+    pub export_defects: Option<PathBuf>,
 }
 
 /// Arguments of `solidkit compare`.

@@ -10,6 +10,7 @@ use serde_json::json;
 use solidkit_meshing::IndexedMesh;
 use solidkit_meshing::io::read_mesh;
 use solidkit_meshing::render::defects::{defect_camera, render_defects};
+use solidkit_meshing::render::defects_ply::write_defects_ply;
 use solidkit_meshing::render::png_out::write_png;
 use solidkit_meshing::repair::weld_mesh;
 use solidkit_meshing::topology::DefectItems;
@@ -30,8 +31,14 @@ pub fn run(a: &CheckArgs) -> Result<u8> {
         self_intersections: !a.no_self_intersections,
     };
     let r = TopologyReport::with_options(&mesh, &options);
-    if let Some(path) = &a.render {
-        write_defect_picture(a, &mesh, &options, path)?;
+    if a.render.is_some() || a.export_defects.is_some() {
+        let items = DefectItems::of(&mesh, &options);
+        if let Some(path) = &a.render {
+            write_defect_picture(a, &mesh, &items, path)?;
+        }
+        if let Some(path) = &a.export_defects {
+            write_defects_ply(path, &mesh, &items)?;
+        }
     }
     if a.json {
         let mut extra = vec![
@@ -61,13 +68,12 @@ pub fn run(a: &CheckArgs) -> Result<u8> {
 fn write_defect_picture(
     a: &CheckArgs,
     mesh: &IndexedMesh,
-    options: &ReportOptions,
+    items: &DefectItems,
     path: &Path,
 ) -> Result<()> {
-    let items = DefectItems::of(mesh, options);
     let frame = super::render::mesh_box(&mesh.positions);
     let cam = defect_camera(a.view, &frame, a.size)
         .map_err(|e| anyhow::anyhow!("{}: {e}", a.mesh.display()))?;
-    write_png(path, &render_defects(mesh, &items, &cam))?;
+    write_png(path, &render_defects(mesh, items, &cam))?;
     Ok(())
 }

@@ -4,6 +4,7 @@ mod bench;
 mod check;
 mod compare;
 mod convert;
+mod gallery;
 mod r#gen;
 mod mesh;
 mod render;
@@ -25,6 +26,7 @@ pub fn run(command: Command) -> Result<u8> {
         Command::BenchCase(a) => bench::run_case(&a),
         Command::Subdivide(a) => subdivide::run(&a),
         Command::Render(a) => render::run(&a),
+        Command::Gallery(a) => gallery::run(&a),
         Command::Repair(a) => repair::run(&a),
     }
 }

@@ -70,6 +70,7 @@ pub use polygon_mesh::{
     write_polygon_mesh_with,
 };
 pub use resolver::FileMeshResolver;
+pub use stl::binary_records as stl_binary_records;
 pub use stored::{encode_mesh, stored_mesh};
 pub use threemf::MODEL_PATH as THREEMF_MODEL_PATH;
 pub use zip::crc32;

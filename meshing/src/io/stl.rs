@@ -47,6 +47,14 @@ pub(super) fn read(bytes: &[u8], name: &str) -> Result<IndexedMesh, MeshIoError>
     }
 }
 
+/// The triangle records (50 bytes each: normal, three corners as little-endian `f32`,
+/// attribute) of a binary STL file's content, when the size rule of [`read`] makes it binary;
+/// `None` for ASCII or malformed files.
+pub fn binary_records(bytes: &[u8]) -> Option<&[u8]> {
+    let count = declared_count(bytes)?;
+    (binary_len(count) == bytes.len() as u64).then(|| &bytes[PREAMBLE_LEN as usize..])
+}
+
 /// The triangle count in a binary header, if the file is long enough to have one.
 fn declared_count(bytes: &[u8]) -> Option<u32> {
     let mut cursor = ByteCursor::new(bytes, HEADER_LEN, Endian::Little);

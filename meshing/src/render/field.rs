@@ -15,7 +15,8 @@
 
 use super::Image;
 use super::camera::Camera;
-use super::shade::{self, lambert, unit_or};
+use super::gbuffer::{GBuffer, to_f32};
+use super::shade::unit_or;
 use glam::DVec3;
 use rayon::prelude::*;
 use solidkit_kernel::program::{BatchScratch, IntervalScratch, Pruned};
@@ -24,12 +25,15 @@ use std::sync::Arc;
 
 /// Tile side in pixels.
 const TILE: u32 = 8;
+/// Tiles per side of a group, whose depth segments are found first and shared by its tiles.
+const GROUP: u32 = 4;
 /// Depth of the segments pixels sample, in pixels.
 const SEGMENT: f64 = 4.0;
-/// Samples per pixel of depth.
-const SAMPLES_PER_PIXEL: f64 = 1.0;
+/// Depth of a group's segments, in pixels (its tiles split them further).
+const GROUP_SEGMENT: f64 = 16.0;
 
 /// Where the rays of a tile may meet the surface.
+#[derive(Debug, Clone, Copy)]
 enum Segment {
     /// The solid's surface may cross `t0..t1`; the program valid there.
     Surface(f64, f64, usize),
@@ -49,51 +53,81 @@ struct Scratch {
     batch_out: Vec<f32>,
 }
 
+/// One tile's hits: depth and normal per pixel, row by row.
+type TileHits = Vec<(f32, [f32; 3])>;
+
 /// The field of `program` as seen by `cam`, shaded in `base` over the background.
 pub fn render_field(program: &Program, cam: &Camera, base: [u8; 3]) -> Image {
-    let (w, h) = (cam.size.width, cam.size.height);
-    let (tiles_x, tiles_y) = (w.div_ceil(TILE), h.div_ceil(TILE));
-    let root = Arc::new(program.clone());
-    let tiles: Vec<Vec<[u8; 3]>> = (0..tiles_x * tiles_y)
-        .into_par_iter()
-        .map_init(Scratch::default, |s, i| {
-            render_tile(&root, cam, i % tiles_x, i / tiles_x, base, s)
-        })
-        .collect();
-    let mut image = Image {
-        width: w,
-        height: h,
-        pixels: vec![shade::BACKGROUND; w as usize * h as usize],
-    };
-    for (i, tile) in tiles.iter().enumerate() {
-        let (x0, y0) = ((i as u32 % tiles_x) * TILE, (i as u32 / tiles_x) * TILE);
-        let tw = TILE.min(w - x0);
-        for (k, &c) in tile.iter().enumerate() {
-            let (x, y) = (x0 + k as u32 % tw, y0 + k as u32 / tw);
-            image.pixels[y as usize * w as usize + x as usize] = c;
-        }
-    }
-    image
+    trace_field(program, cam).shade(cam, base)
 }
 
-/// The pixels of one tile, row by row.
+/// The surface of `program` as seen by `cam`: depth and normal per pixel.
+pub fn trace_field(program: &Program, cam: &Camera) -> GBuffer {
+    let (w, h) = (cam.size.width, cam.size.height);
+    let span = TILE * GROUP;
+    let (groups_x, groups_y) = (w.div_ceil(span), h.div_ceil(span));
+    let root = Arc::new(program.clone());
+    let groups: Vec<Vec<(u32, u32, TileHits)>> = (0..groups_x * groups_y)
+        .into_par_iter()
+        .map_init(Scratch::default, |s, g| {
+            render_group(&root, cam, g % groups_x, g / groups_x, s)
+        })
+        .collect();
+    let mut out = GBuffer::empty(cam.size);
+    for (x0, y0, tile) in groups.into_iter().flatten() {
+        let tw = TILE.min(w - x0);
+        for (k, (d, n)) in tile.into_iter().enumerate() {
+            let (x, y) = (x0 + k as u32 % tw, y0 + k as u32 / tw);
+            let i = y as usize * w as usize + x as usize;
+            out.depth[i] = d;
+            out.normal[i] = n;
+        }
+    }
+    out
+}
+
+/// The tiles of group `(gx, gy)`: its depth segments first, then each tile from those.
+fn render_group(
+    root: &Arc<Program>,
+    cam: &Camera,
+    gx: u32,
+    gy: u32,
+    s: &mut Scratch,
+) -> Vec<(u32, u32, TileHits)> {
+    let (w, h) = (cam.size.width, cam.size.height);
+    let span = TILE * GROUP;
+    let (x0, y0) = (gx * span, gy * span);
+    let rect = [x0, y0, (x0 + span).min(w), (y0 + span).min(h)];
+    let mut programs = vec![root.clone()];
+    let start = [Segment::Surface(0.0, cam.depth_range(), 0)];
+    let group = segments(cam, rect, &start, GROUP_SEGMENT, &mut programs, s);
+    let mut out = Vec::new();
+    for ty in (y0..rect[3]).step_by(TILE as usize) {
+        for tx in (x0..rect[2]).step_by(TILE as usize) {
+            let tile = [tx, ty, (tx + TILE).min(w), (ty + TILE).min(h)];
+            let hits = render_tile(root, cam, tile, &group, &mut programs, s);
+            out.push((tx, ty, hits));
+        }
+    }
+    out
+}
+
+/// The hits of one tile, row by row, from the segments of its group.
 fn render_tile(
     root: &Arc<Program>,
     cam: &Camera,
-    tx: u32,
-    ty: u32,
-    base: [u8; 3],
+    rect: [u32; 4],
+    group: &[Segment],
+    programs: &mut Vec<Arc<Program>>,
     s: &mut Scratch,
-) -> Vec<[u8; 3]> {
-    let (x0, y0) = (tx * TILE, ty * TILE);
-    let (x1, y1) = (
-        (x0 + TILE).min(cam.size.width),
-        (y0 + TILE).min(cam.size.height),
-    );
-    let mut programs = vec![root.clone()];
-    let segments = tile_segments(cam, [x0, y0, x1, y1], &mut programs, s);
+) -> TileHits {
+    let [x0, y0, x1, y1] = rect;
     let tw = x1 - x0;
-    let mut out = vec![shade::BACKGROUND; (tw * (y1 - y0)) as usize];
+    let mut out = vec![(f32::INFINITY, [0.0; 3]); (tw * (y1 - y0)) as usize];
+    if group.is_empty() {
+        return out;
+    }
+    let segments = segments(cam, rect, group, SEGMENT, programs, s);
     if segments.is_empty() {
         return out;
     }
@@ -101,19 +135,18 @@ fn render_tile(
         .map(|k| cam.origin(f64::from(x0 + k % tw) + 0.5, f64::from(y0 + k / tw) + 0.5))
         .collect();
     let mut active: Vec<usize> = (0..out.len()).collect();
-    let light = cam.light();
     for seg in &segments {
         match *seg {
             Segment::Inside(t0) => {
                 for &k in &active {
                     let n = normal(root, origins[k] + cam.dir * t0, cam, s);
-                    out[k] = lambert(n, light, base);
+                    out[k] = (t0 as f32, to_f32(n));
                 }
                 active.clear();
             }
             Segment::Surface(t0, t1, p) => {
                 let program = &programs[p];
-                let n = ((t1 - t0) / cam.pixel * SAMPLES_PER_PIXEL).ceil().max(1.0) as usize;
+                let n = ((t1 - t0) / cam.pixel).ceil().max(1.0) as usize;
                 let t = |k: usize| t0 + (t1 - t0) * k as f64 / n as f64;
                 sample(program, cam, &origins, &active, n, &t, s);
                 let mut still = Vec::with_capacity(active.len());
@@ -122,13 +155,17 @@ fn render_tile(
                     match values.iter().position(|&v| v <= 0.0) {
                         None => still.push(k),
                         Some(i) => {
-                            let at = |t: f64| origins[k] + cam.dir * t;
                             let hit = if i == 0 {
                                 t0
                             } else {
                                 secant(t(i - 1), t(i), values[i - 1], values[i])
                             };
-                            out[k] = lambert(normal(program, at(hit), cam, s), light, base);
+                            // The normal half a pixel before the hit: outside, where a
+                            // distance field's gradient points to the nearest surface point
+                            // (inside, near an edge, it may take the other face's).
+                            let back = (hit - 0.5 * cam.pixel).max(t0.min(hit));
+                            let nrm = normal(program, origins[k] + cam.dir * back, cam, s);
+                            out[k] = (hit as f32, to_f32(nrm));
                         }
                     }
                 }
@@ -157,9 +194,11 @@ fn sample(
     for v in [&mut s.xs, &mut s.ys, &mut s.zs] {
         v.clear();
     }
+    let steps: Vec<DVec3> = (0..=n).map(|i| cam.dir * t(i)).collect();
     for &k in active {
-        for i in 0..=n {
-            let p = origins[k] + cam.dir * t(i);
+        let o = origins[k];
+        for step in &steps {
+            let p = o + *step;
             s.xs.push(p.x as f32);
             s.ys.push(p.y as f32);
             s.zs.push(p.z as f32);
@@ -170,10 +209,13 @@ fn sample(
     program.eval_many(&s.xs, &s.ys, &s.zs, &mut s.batch_out, &mut s.batch);
 }
 
-/// The tile's segments, front to back (see the module docs).
-fn tile_segments(
+/// The segments of the rays through `rect` (pixel corners), front to back, refined from
+/// `start` (front to back) until at most `max_pixels` deep (see the module docs).
+fn segments(
     cam: &Camera,
     [x0, y0, x1, y1]: [u32; 4],
+    start: &[Segment],
+    max_pixels: f64,
     programs: &mut Vec<Arc<Program>>,
     s: &mut Scratch,
 ) -> Vec<Segment> {
@@ -189,10 +231,18 @@ fn tile_segments(
         }
         b
     };
-    let max_len = SEGMENT * cam.pixel;
+    let max_len = max_pixels * cam.pixel;
     let mut out = Vec::new();
-    let mut stack = vec![(0.0, cam.depth_range(), 0usize)];
-    while let Some((t0, t1, p)) = stack.pop() {
+    // Popped front first: the start segments are pushed back to front.
+    let mut stack: Vec<Segment> = start.iter().rev().copied().collect();
+    while let Some(seg) = stack.pop() {
+        let (t0, t1, p) = match seg {
+            Segment::Inside(_) => {
+                out.push(seg);
+                break;
+            }
+            Segment::Surface(t0, t1, p) => (t0, t1, p),
+        };
         match programs[p].prune_for_box(&prism(t0, t1), &mut s.interval) {
             Pruned::Outside => {}
             Pruned::Inside => {
@@ -211,8 +261,8 @@ fn tile_segments(
                     out.push(Segment::Surface(t0, t1, p));
                 } else {
                     let mid = 0.5 * (t0 + t1);
-                    stack.push((mid, t1, p));
-                    stack.push((t0, mid, p));
+                    stack.push(Segment::Surface(mid, t1, p));
+                    stack.push(Segment::Surface(t0, mid, p));
                 }
             }
         }

@@ -1,24 +1,33 @@
 //! Pictures of solids and meshes, on the CPU: fields by interval-culled ray casting
-//! ([`field`]), meshes by a z-buffer ([`raster`]), cross-sections by sign ([`section`]) and mesh
-//! defects in colour ([`defects`]). Orthographic camera ([`camera`]), Lambert shading plus ambient
-//! ([`shade`]), PNG output ([`png_out`]).
+//! ([`field`]), meshes by a z-buffer ([`raster`]), both into a depth-and-normal buffer
+//! ([`gbuffer`]) that is shaded, given feature edges ([`edges`]) and an axis triad ([`axes`]),
+//! alone or as a sheet of four views ([`sheet`]); cross-sections by sign ([`section`]) and mesh
+//! defects in colour ([`defects`], and as a coloured PLY: [`defects_ply`]). Orthographic camera
+//! ([`camera`]), Lambert shading plus ambient ([`shade`]), PNG output ([`png_out`]).
 //!
 //! Every pixel is computed from its own inputs only (rayon splits work by tiles or rows, each
 //! written by one task), so the bytes do not depend on the thread count. Sizes are checked before
 //! any image memory is allocated ([`size`]).
 
+pub mod axes;
 pub mod camera;
 pub mod defects;
+pub mod defects_ply;
 mod draw;
+pub mod edges;
 pub mod field;
 mod font;
+pub mod gbuffer;
 pub mod png_out;
 pub mod raster;
 pub mod section;
 pub mod shade;
+pub mod sheet;
 pub mod size;
 
 pub use camera::{Camera, View};
+pub use gbuffer::GBuffer;
+pub use sheet::{Look, picture};
 pub use size::{ImageSize, MAX_PIXELS};
 
 use std::path::PathBuf;

@@ -7,19 +7,27 @@ use crate::input;
 use crate::output::outln;
 use anyhow::{Result, anyhow};
 use glam::DVec3;
+use solidkit_kernel::files::{DEFAULT_MAX_FILE_BYTES, read_regular_file};
 use solidkit_kernel::{Aabb, Solid};
-use solidkit_meshing::io::read_mesh;
-use solidkit_meshing::render::field::render_field;
+use solidkit_meshing::io::{MeshFormat, read_mesh_bytes, stl_binary_records};
+use solidkit_meshing::render::field::trace_field;
 use solidkit_meshing::render::png_out::write_png;
-use solidkit_meshing::render::raster::render_mesh;
+use solidkit_meshing::render::raster::{StlRecords, Triangles, trace_mesh, triangles_box};
 use solidkit_meshing::render::section::render_section;
-use solidkit_meshing::render::{Camera, shade};
+use solidkit_meshing::render::{Image, Look, picture, shade};
 use std::path::Path;
 use std::time::Instant;
 
 /// Renders the input and writes the PNG.
 pub fn run(a: &RenderArgs) -> Result<u8> {
     let start = Instant::now();
+    let look = Look {
+        view: (a.views == 1).then_some(a.view),
+        edges: a.edges,
+        axes: a.axes,
+        base: shade::SOLID,
+    };
+    let name = a.input.display();
     let image = if is_solid(&a.input) {
         let (mut solid, warnings) =
             input::load_solid_warned(&a.input, a.facets.into(), &a.allow_path, &a.define)?;
@@ -34,34 +42,53 @@ pub fn run(a: &RenderArgs) -> Result<u8> {
             }
             None => solid.bbox(),
         };
-        let name = a.input.display();
         let program = solid.compile();
         match a.section {
-            Some(section) => render_section(&program, &frame, section, a.size)
-                .map_err(|e| anyhow!("{name}: {e}"))?,
-            None => {
-                let cam =
-                    Camera::framing(a.view, &frame, a.size).map_err(|e| anyhow!("{name}: {e}"))?;
-                render_field(&program, &cam, shade::SOLID)
-            }
+            Some(section) => render_section(&program, &frame, section, a.size),
+            None => picture(&frame, a.size, &look, |cam| trace_field(&program, cam)),
         }
+        .map_err(|e| anyhow!("{name}: {e}"))?
     } else {
         if a.section.is_some() {
             return Err(anyhow!(
                 "--section needs a solid (.json, .rhai or .csg), not a mesh file"
             ));
         }
-        let mesh = read_mesh(&a.input)?;
-        let frame = a.bounds.map_or_else(|| mesh_box(&mesh.positions), to_box);
-        let cam = Camera::framing(a.view, &frame, a.size)
-            .map_err(|e| anyhow!("{}: {e}", a.input.display()))?;
-        render_mesh(&mesh, &cam, shade::SOLID)
+        let format = MeshFormat::from_path(&a.input)?;
+        let bytes = read_regular_file(&a.input, DEFAULT_MAX_FILE_BYTES)
+            .map_err(|e| anyhow!("{name}: {e}"))?;
+        let records = match format {
+            MeshFormat::Stl => stl_binary_records(&bytes),
+            _ => None,
+        };
+        // Binary STL is drawn straight from its records (no welding), unless a coordinate is
+        // not finite, which the reader reports.
+        match records.map(|r| (StlRecords(r), triangles_box(&StlRecords(r)))) {
+            Some((stl, (frame, true))) => render_triangles(&stl, frame, a, &look)?,
+            _ => {
+                let mesh = read_mesh_bytes(&bytes, format, &name.to_string())?;
+                let frame = triangles_box(&mesh).0;
+                render_triangles(&mesh, frame, a, &look)?
+            }
+        }
     };
     let time_s = start.elapsed().as_secs_f64();
     write_png(&a.output, &image)?;
     outln!("time: {time_s:.3} s")?;
     outln!("wrote: {}", a.output.display())?;
     Ok(0)
+}
+
+/// The picture of a mesh, framing `frame` (its box) or `--bounds`.
+fn render_triangles(
+    mesh: &impl Triangles,
+    frame: Aabb,
+    a: &RenderArgs,
+    look: &Look,
+) -> Result<Image> {
+    let frame = a.bounds.map_or(frame, to_box);
+    picture(&frame, a.size, look, |cam| trace_mesh(mesh, cam))
+        .map_err(|e| anyhow!("{}: {e}", a.input.display()))
 }
 
 /// True for the inputs rendered from their field (by extension: the front ends' formats).
