@@ -9,6 +9,7 @@ use solidkit_meshing::render::defects::{
     BOUNDARY_EDGE, INCONSISTENT_FACE, NON_MANIFOLD_EDGE, NON_MANIFOLD_VERTEX,
     SELF_INTERSECTING_FACE, defect_camera, line_width,
 };
+use solidkit_meshing::render::png_out::decode;
 use solidkit_meshing::render::{ImageSize, View, shade};
 use solidkit_meshing::topology::DefectItems;
 use solidkit_tests::{path_str, run_cli};
@@ -27,18 +28,8 @@ const BOUNDS: &str = "-1,-1,-1,1.1,1,1";
 
 /// Decoded RGB pixels and width of a PNG.
 fn read_png(path: &Path) -> (Vec<[u8; 3]>, u32) {
-    let decoder = png::Decoder::new(std::io::BufReader::new(
-        std::fs::File::open(path).expect("open png"),
-    ));
-    let mut reader = decoder.read_info().expect("png header");
-    let mut buf = vec![0; reader.output_buffer_size().expect("size")];
-    let info = reader.next_frame(&mut buf).expect("png frame");
-    assert_eq!(info.color_type, png::ColorType::Rgb);
-    let pixels = buf[..info.buffer_size()]
-        .chunks_exact(3)
-        .map(|c| [c[0], c[1], c[2]])
-        .collect();
-    (pixels, info.width)
+    let image = decode(&std::fs::read(path).expect("png")).expect("an RGB png");
+    (image.pixels, image.width)
 }
 
 fn ok(args: &[&str]) {
@@ -286,4 +277,153 @@ fn hostile_sizes_are_refused_before_allocating() {
         ],
     );
     assert_eq!(o.status.code(), Some(2));
+}
+
+/// A parsed `check --export-defects` file: per element, the rows after the header.
+struct DefectsPly {
+    vertices: Vec<Vec<f64>>,
+    faces: Vec<Vec<f64>>,
+    edges: Vec<Vec<f64>>,
+}
+
+fn read_defects_ply(path: &Path) -> DefectsPly {
+    let text = std::fs::read_to_string(path).expect("ply text");
+    let (header, body) = text.split_once("end_header\n").expect("header");
+    let mut counts = Vec::new();
+    for line in header.lines() {
+        if let Some(rest) = line.strip_prefix("element ") {
+            let (name, n) = rest.split_once(' ').expect("element line");
+            counts.push((name.to_string(), n.parse::<usize>().expect("count")));
+        }
+    }
+    let mut rows = body.lines().map(|l| {
+        l.split(' ')
+            .map(|t| t.parse::<f64>().expect("number"))
+            .collect::<Vec<_>>()
+    });
+    let mut out = DefectsPly {
+        vertices: Vec::new(),
+        faces: Vec::new(),
+        edges: Vec::new(),
+    };
+    for (name, n) in counts {
+        let list = match name.as_str() {
+            "vertex" => &mut out.vertices,
+            "face" => &mut out.faces,
+            "edge" => &mut out.edges,
+            other => panic!("unexpected element {other}"),
+        };
+        list.extend(rows.by_ref().take(n));
+    }
+    assert!(
+        rows.next().is_none(),
+        "{path:?}: rows beyond the declared elements"
+    );
+    out
+}
+
+#[test]
+fn exported_defects_match_the_report() {
+    use solidkit_meshing::render::defects_ply::class_color;
+    let dir = tempfile::tempdir().expect("tempdir");
+    ok(&[
+        "gen",
+        "broken",
+        "-o",
+        path_str(dir.path()),
+        "--format",
+        "ply",
+    ]);
+    let mut files = 0;
+    for entry in std::fs::read_dir(dir.path()).expect("dir") {
+        let file = entry.expect("entry").path();
+        if file.extension().and_then(|e| e.to_str()) != Some("ply") {
+            continue;
+        }
+        files += 1;
+        let out = file.with_extension("defects.ply");
+        let o = run_cli(
+            BIN,
+            &[
+                "check",
+                path_str(&file),
+                "--json",
+                "--export-defects",
+                path_str(&out),
+            ],
+        );
+        assert!(matches!(o.status.code(), Some(0 | 1)), "{file:?}");
+        let report: serde_json::Value = serde_json::from_slice(&o.stdout).expect("json");
+        let count = |key: &str| report[key].as_u64().expect(key) as usize;
+        let ply = read_defects_ply(&out);
+        let mesh = read_mesh(&file).expect("mesh");
+        let items = DefectItems::of(&mesh, &ReportOptions::default());
+        let class = |rows: &[Vec<f64>], c: f64| {
+            rows.iter()
+                .filter(|r| *r.last().expect("class") == c)
+                .count()
+        };
+        assert_eq!(class(&ply.edges, 0.0), count("boundary_edges"), "{file:?}");
+        assert_eq!(
+            class(&ply.edges, 1.0),
+            count("non_manifold_edges"),
+            "{file:?}"
+        );
+        assert_eq!(
+            class(&ply.vertices, 2.0),
+            count("non_manifold_vertices"),
+            "{file:?}"
+        );
+        assert_eq!(
+            class(&ply.faces, 3.0),
+            items.inconsistent_faces.len(),
+            "{file:?}"
+        );
+        assert_eq!(
+            class(&ply.faces, 4.0),
+            items.self_intersecting_faces.len(),
+            "{file:?}"
+        );
+        assert_eq!(ply.edges.len() + ply.faces.len(), {
+            items.boundary_edges.len()
+                + items.non_manifold_edges.len()
+                + items.inconsistent_faces.len()
+                + items.self_intersecting_faces.len()
+        });
+        // Colours are the legend's; the faces and edges name the mesh's own positions.
+        for row in ply.faces.iter().chain(&ply.edges) {
+            let n = row.len();
+            let rgb = [row[n - 4], row[n - 3], row[n - 2]].map(|v| v as u8);
+            assert_eq!(rgb, class_color(row[n - 1] as u8), "{file:?}");
+        }
+        for row in &ply.vertices {
+            let p = glam::DVec3::new(row[0], row[1], row[2]);
+            assert!(
+                mesh.positions.contains(&p),
+                "{file:?}: {p} is no vertex of the mesh"
+            );
+        }
+        for e in &ply.edges {
+            let [a, b] = [e[0], e[1]].map(|i| &ply.vertices[i as usize]);
+            let [a, b] = [a, b].map(|v| glam::DVec3::new(v[0], v[1], v[2]));
+            let named = items
+                .boundary_edges
+                .iter()
+                .chain(&items.non_manifold_edges)
+                .any(|&[u, v]| {
+                    let (u, v) = (mesh.positions[u as usize], mesh.positions[v as usize]);
+                    (u, v) == (a, b) || (u, v) == (b, a)
+                });
+            assert!(named, "{file:?}: edge {a} {b} is not a reported edge");
+        }
+        if !ply.faces.is_empty() {
+            // Our own strict PLY reader takes it (the edge element is skipped).
+            let faces = read_mesh(&out)
+                .expect("exported PLY reads back")
+                .triangles
+                .len();
+            assert_eq!(faces, ply.faces.len());
+        }
+    }
+    assert!(files >= 5, "gen broken wrote {files} meshes");
 }

@@ -2,7 +2,8 @@
 //! trimesh): the offending faces as `face` elements and the offending edges as `edge` elements,
 //! each with an 8-bit colour (the same as the picture's legend, [`super::defects`]) and a `class`
 //! code; vertices are only those the items use, numbered in first-use order, coloured by the first
-//! item using them (non-manifold vertices in their own colour).
+//! item using them (non-manifold vertices in their own colour). An element without items is left
+//! out of the header.
 //!
 //! Classes: 0 boundary edge, 1 non-manifold edge, 2 non-manifold vertex (listed as vertices
 //! whose `class` is 2), 3 flipped face, 4 self-intersecting face. A face in both face classes
@@ -100,23 +101,35 @@ pub fn defects_ply(mesh: &IndexedMesh, items: &DefectItems) -> String {
             edges.push((e.map(|v| vertices.add(v, color, CLASS_NONE)), class));
         }
     }
-    let mut out = String::new();
-    let _ = write!(
-        out,
+    // Elements without items are left out of the header (some readers refuse an empty one).
+    let mut out = String::from(
         "ply\nformat ascii 1.0\n\
          comment solidkit check --export-defects: classes 0 boundary edge, 1 non-manifold edge, \
-         2 non-manifold vertex, 3 flipped face, 4 self-intersecting face, 255 none\n\
-         element vertex {}\nproperty double x\nproperty double y\nproperty double z\n\
-         property uchar red\nproperty uchar green\nproperty uchar blue\nproperty uchar class\n\
-         element face {}\nproperty list uchar int vertex_indices\n\
-         property uchar red\nproperty uchar green\nproperty uchar blue\nproperty uchar class\n\
-         element edge {}\nproperty int vertex1\nproperty int vertex2\n\
-         property uchar red\nproperty uchar green\nproperty uchar blue\nproperty uchar class\n\
-         end_header\n",
-        vertices.list.len(),
-        faces.len(),
-        edges.len()
+         2 non-manifold vertex, 3 flipped face, 4 self-intersecting face, 255 none\n",
     );
+    let colour_and_class = "property uchar red\nproperty uchar green\nproperty uchar blue\n\
+                            property uchar class\n";
+    let _ = write!(
+        out,
+        "element vertex {}\nproperty double x\nproperty double y\nproperty double z\n\
+         {colour_and_class}",
+        vertices.list.len()
+    );
+    if !faces.is_empty() {
+        let _ = write!(
+            out,
+            "element face {}\nproperty list uchar int vertex_indices\n{colour_and_class}",
+            faces.len()
+        );
+    }
+    if !edges.is_empty() {
+        let _ = write!(
+            out,
+            "element edge {}\nproperty int vertex1\nproperty int vertex2\n{colour_and_class}",
+            edges.len()
+        );
+    }
+    out.push_str("end_header\n");
     for &(v, [r, g, b], class) in &vertices.list {
         let p = mesh.positions[v as usize];
         let _ = writeln!(out, "{} {} {} {r} {g} {b} {class}", p.x, p.y, p.z);
