@@ -19,7 +19,7 @@ use super::gbuffer::{GBuffer, to_f32};
 use super::shade::unit_or;
 use glam::DVec3;
 use rayon::prelude::*;
-use solidkit_kernel::program::{BatchScratch, IntervalScratch, Pruned};
+use solidkit_kernel::program::{BatchScratch, GradientScratch, IntervalScratch, Pruned};
 use solidkit_kernel::{Aabb, Program};
 use std::sync::Arc;
 
@@ -45,7 +45,10 @@ enum Segment {
 #[derive(Default)]
 struct Scratch {
     interval: IntervalScratch,
-    gradients: Vec<(f64, DVec3)>,
+    gradients: GradientScratch,
+    points: Vec<DVec3>,
+    values: Vec<f64>,
+    normals: Vec<DVec3>,
     batch: BatchScratch,
     xs: Vec<f32>,
     ys: Vec<f32>,
@@ -138,10 +141,8 @@ fn render_tile(
     for seg in &segments {
         match *seg {
             Segment::Inside(t0) => {
-                for &k in &active {
-                    let n = normal(root, origins[k] + cam.dir * t0, cam, s);
-                    out[k] = (t0 as f32, to_f32(n));
-                }
+                let hits: Vec<(usize, f64, f64)> = active.iter().map(|&k| (k, t0, t0)).collect();
+                shade_hits(root, cam, &origins, &hits, &mut out, s);
                 active.clear();
             }
             Segment::Surface(t0, t1, p) => {
@@ -150,6 +151,7 @@ fn render_tile(
                 let t = |k: usize| t0 + (t1 - t0) * k as f64 / n as f64;
                 sample(program, cam, &origins, &active, n, &t, s);
                 let mut still = Vec::with_capacity(active.len());
+                let mut hits = Vec::new();
                 for (j, &k) in active.iter().enumerate() {
                     let values = &s.batch_out[j * (n + 1)..(j + 1) * (n + 1)];
                     match values.iter().position(|&v| v <= 0.0) {
@@ -164,11 +166,11 @@ fn render_tile(
                             // distance field's gradient points to the nearest surface point
                             // (inside, near an edge, it may take the other face's).
                             let back = (hit - 0.5 * cam.pixel).max(t0.min(hit));
-                            let nrm = normal(program, origins[k] + cam.dir * back, cam, s);
-                            out[k] = (hit as f32, to_f32(nrm));
+                            hits.push((k, hit, back));
                         }
                     }
                 }
+                shade_hits(program, cam, &origins, &hits, &mut out, s);
                 active = still;
             }
         }
@@ -193,15 +195,20 @@ fn sample(
     let count = active.len() * (n + 1);
     for v in [&mut s.xs, &mut s.ys, &mut s.zs] {
         v.clear();
+        v.resize(count, 0.0);
     }
     let steps: Vec<DVec3> = (0..=n).map(|i| cam.dir * t(i)).collect();
-    for &k in active {
+    let rows =
+        s.xs.chunks_exact_mut(n + 1)
+            .zip(s.ys.chunks_exact_mut(n + 1))
+            .zip(s.zs.chunks_exact_mut(n + 1));
+    for (&k, ((xs, ys), zs)) in active.iter().zip(rows) {
         let o = origins[k];
-        for step in &steps {
+        for (i, step) in steps.iter().enumerate() {
             let p = o + *step;
-            s.xs.push(p.x as f32);
-            s.ys.push(p.y as f32);
-            s.zs.push(p.z as f32);
+            xs[i] = p.x as f32;
+            ys[i] = p.y as f32;
+            zs[i] = p.z as f32;
         }
     }
     s.batch_out.clear();
@@ -282,8 +289,29 @@ fn secant(lo: f64, hi: f64, a: f32, b: f32) -> f64 {
     }
 }
 
-/// The surface normal at `p` (the field's gradient), facing the viewer when it has no direction.
-fn normal(program: &Program, p: DVec3, cam: &Camera, s: &mut Scratch) -> DVec3 {
-    let (_, g) = program.value_gradient_with(p, &mut s.gradients);
-    unit_or(g, -cam.dir)
+/// Stores the hits `(pixel, depth, depth of the normal)` of one segment: the normals are the
+/// gradients of `program` (double precision, one batch), facing the viewer where they have no
+/// direction.
+fn shade_hits(
+    program: &Program,
+    cam: &Camera,
+    origins: &[DVec3],
+    hits: &[(usize, f64, f64)],
+    out: &mut TileHits,
+    s: &mut Scratch,
+) {
+    if hits.is_empty() {
+        return;
+    }
+    s.points.clear();
+    s.points
+        .extend(hits.iter().map(|&(k, _, at)| origins[k] + cam.dir * at));
+    s.values.clear();
+    s.values.resize(hits.len(), 0.0);
+    s.normals.clear();
+    s.normals.resize(hits.len(), DVec3::ZERO);
+    program.values_gradients(&s.points, &mut s.values, &mut s.normals, &mut s.gradients);
+    for (&(k, hit, _), &g) in hits.iter().zip(&s.normals) {
+        out[k] = (hit as f32, to_f32(unit_or(g, -cam.dir)));
+    }
 }
