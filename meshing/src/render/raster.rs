@@ -334,7 +334,53 @@ pub fn render_mesh(mesh: &impl Triangles, cam: &Camera, base: [u8; 3]) -> Image 
 
 #[cfg(test)]
 mod tests {
-    use super::scan_triangle;
+    use super::{StlRecords, Triangles, ceil, floor, scan_triangle, triangles_box};
+    use glam::DVec3;
+
+    #[test]
+    fn floor_and_ceil_match_the_library() {
+        let mut values = vec![
+            0.0, -0.0, 0.5, -0.5, 1.0, -1.0, 2.5e15, -2.5e15, 1e300, -1e300,
+        ];
+        for k in -2000..2000 {
+            let v = f64::from(k) * 0.37 + 0.001;
+            values.extend([v, -v, v.trunc(), f64::from(k) + 0.5]);
+        }
+        values.extend([
+            4_503_599_627_370_495.5,
+            -4_503_599_627_370_495.5,
+            9.1e15 + 1.0,
+        ]);
+        for v in values {
+            assert_eq!(floor(v), v.floor(), "floor {v}");
+            assert_eq!(ceil(v), v.ceil(), "ceil {v}");
+        }
+    }
+
+    #[test]
+    fn stl_records_give_the_corners_in_order() {
+        let corners = [[1.0f32, 2.0, 3.0], [-4.0, 5.5, 6.0], [7.0, -8.0, 0.25]];
+        let mut record = vec![0u8; 12];
+        for c in corners {
+            for x in c {
+                record.extend(x.to_le_bytes());
+            }
+        }
+        record.extend([0, 0]);
+        let mut bytes = record.clone();
+        bytes.extend(&record);
+        let stl = StlRecords(&bytes);
+        assert_eq!(stl.triangle_count(), 2);
+        let t = stl.triangle(1).expect("second triangle");
+        assert_eq!(t[1], DVec3::new(-4.0, 5.5, 6.0));
+        assert!(stl.triangle(2).is_none());
+        let (b, finite) = triangles_box(&stl);
+        assert!(finite);
+        assert_eq!(
+            (b.min, b.max),
+            (DVec3::new(-4.0, -8.0, 0.25), DVec3::new(7.0, 5.5, 6.0))
+        );
+    }
 
     #[test]
     fn shared_edge_leaves_no_gap_and_both_windings_fill() {
