@@ -3,6 +3,7 @@
 //! cap triangulations (for tessellations).
 
 mod circle;
+mod edges;
 mod error;
 mod polygon;
 mod rectangle;

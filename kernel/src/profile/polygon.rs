@@ -6,13 +6,23 @@
 //! The distance is computed from corner accessors, so lofts evaluate it on interpolated corners
 //! without building a polygon.
 
+use super::edges::EdgeIndex;
 use super::error::ProfileError;
 use glam::DVec2;
 
 /// A polygon: an outline and holes, each a closed loop of corners (last joined to first).
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone)]
 pub struct Polygon {
     loops: Vec<Vec<DVec2>>,
+    /// The edge index of a polygon with many edges (`edges.rs`): same answers, found faster.
+    pub(super) index: Option<EdgeIndex>,
+}
+
+impl PartialEq for Polygon {
+    fn eq(&self, other: &Self) -> bool {
+        // The index is derived from the loops.
+        self.loops == other.loops
+    }
 }
 
 /// The nearest boundary point of a set of loops.
@@ -51,7 +61,7 @@ pub(crate) fn loops_distance_skipping(
     skip: impl Fn(DVec2, DVec2) -> bool,
 ) -> Nearest {
     let mut inside = false;
-    let mut best = (f64::INFINITY, 0, 0, 0.0, DVec2::ZERO, DVec2::X);
+    let mut best = Best::NONE;
     for r in 0..loops {
         let n = len(r);
         let mut a = corner(r, n - 1);
@@ -67,29 +77,75 @@ pub(crate) fn loops_distance_skipping(
             };
             let c = a + e * lambda;
             let d2 = (q - c).length_squared();
-            if d2 < best.0 && !skip(a, b) {
-                best = (d2, r, (i + n - 1) % n, lambda, c, e);
+            if d2 < best.d2 && !skip(a, b) {
+                best = Best {
+                    d2,
+                    ring: r,
+                    edge: (i + n - 1) % n,
+                    lambda,
+                    c,
+                    e,
+                };
             }
-            if (a.y > q.y) != (b.y > q.y) && q.x < a.x + (q.y - a.y) * (b.x - a.x) / (b.y - a.y) {
+            if crosses(q, a, b) {
                 inside = !inside;
             }
             a = b;
         }
     }
-    let (d2, ring, edge, lambda, c, e) = best;
-    let d = d2.sqrt();
-    let away = if d > 0.0 {
-        (q - c) / d
-    } else {
-        DVec2::new(e.y, -e.x).normalize_or(DVec2::X)
+    best.signed(inside, q)
+}
+
+/// Whether the edge `a → b` crosses the ray from `q` towards `+x` (the even-odd rule's test).
+#[inline]
+pub(super) fn crosses(q: DVec2, a: DVec2, b: DVec2) -> bool {
+    (a.y > q.y) != (b.y > q.y) && q.x < a.x + (q.y - a.y) * (b.x - a.x) / (b.y - a.y)
+}
+
+/// The nearest edge found so far by a distance query.
+#[derive(Debug, Clone, Copy)]
+pub(super) struct Best {
+    /// Squared distance to the edge.
+    pub d2: f64,
+    /// Its loop.
+    pub ring: usize,
+    /// Its first corner within the loop.
+    pub edge: usize,
+    /// Position of the nearest point along it.
+    pub lambda: f64,
+    /// The nearest point.
+    pub c: DVec2,
+    /// The edge vector.
+    pub e: DVec2,
+}
+
+impl Best {
+    /// No edge yet.
+    pub const NONE: Best = Best {
+        d2: f64::INFINITY,
+        ring: 0,
+        edge: 0,
+        lambda: 0.0,
+        c: DVec2::ZERO,
+        e: DVec2::X,
     };
-    let (distance, gradient) = if inside { (-d, -away) } else { (d, away) };
-    Nearest {
-        distance,
-        gradient,
-        ring,
-        edge,
-        lambda,
+
+    /// The signed distance and gradient from `q`, negative when `inside`.
+    pub fn signed(self, inside: bool, q: DVec2) -> Nearest {
+        let d = self.d2.sqrt();
+        let away = if d > 0.0 {
+            (q - self.c) / d
+        } else {
+            DVec2::new(self.e.y, -self.e.x).normalize_or(DVec2::X)
+        };
+        let (distance, gradient) = if inside { (-d, -away) } else { (d, away) };
+        Nearest {
+            distance,
+            gradient,
+            ring: self.ring,
+            edge: self.edge,
+            lambda: self.lambda,
+        }
     }
 }
 
@@ -106,8 +162,7 @@ pub(crate) fn inside_loop(q: DVec2, corners: &[DVec2]) -> bool {
     let n = corners.len();
     let mut inside = false;
     for i in 0..n {
-        let (a, b) = (corners[(i + n - 1) % n], corners[i]);
-        if (a.y > q.y) != (b.y > q.y) && q.x < a.x + (q.y - a.y) * (b.x - a.x) / (b.y - a.y) {
+        if crosses(q, corners[(i + n - 1) % n], corners[i]) {
             inside = !inside;
         }
     }
@@ -148,7 +203,8 @@ impl Polygon {
         }
         let mut loops = vec![points];
         loops.extend(holes);
-        Ok(Polygon { loops })
+        let index = EdgeIndex::new(&loops);
+        Ok(Polygon { loops, index })
     }
 
     /// The outline's corners.
@@ -168,6 +224,27 @@ impl Polygon {
 
     /// Signed distance and gradient with details of the nearest edge.
     pub(crate) fn nearest(&self, q: DVec2) -> Nearest {
+        self.nearest_skipping(q, |_, _| false)
+    }
+
+    /// [`Polygon::nearest`] ignoring the edges `skip` selects for the distance (by the index
+    /// when there is one: the same answer).
+    fn nearest_skipping(&self, q: DVec2, skip: impl Fn(DVec2, DVec2) -> bool) -> Nearest {
+        match &self.index {
+            Some(index) if q.is_finite() => index.nearest(&self.loops, q, skip),
+            _ => loops_distance_skipping(
+                q,
+                self.loops.len(),
+                |r| self.loops[r].len(),
+                |r, i| self.loops[r][i],
+                skip,
+            ),
+        }
+    }
+
+    /// [`Polygon::nearest`] by the plain loop over every edge (the reference of the index).
+    #[cfg(test)]
+    pub(crate) fn nearest_plain(&self, q: DVec2) -> Nearest {
         loops_distance(
             q,
             self.loops.len(),
@@ -184,13 +261,7 @@ impl Polygon {
 
     /// Signed distance and gradient ignoring the edges on the y axis (both corners at x = 0).
     pub(crate) fn distance_gradient_off_axis(&self, q: DVec2) -> (f64, DVec2) {
-        let n = loops_distance_skipping(
-            q,
-            self.loops.len(),
-            |r| self.loops[r].len(),
-            |r, i| self.loops[r][i],
-            |a, b| a.x == 0.0 && b.x == 0.0,
-        );
+        let n = self.nearest_skipping(q, |a, b| a.x == 0.0 && b.x == 0.0);
         (n.distance, n.gradient)
     }
 

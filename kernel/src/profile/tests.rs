@@ -204,3 +204,85 @@ fn invalid_profiles_name_their_key() {
     );
     assert_eq!(e.unwrap_err().parameter(), "holes");
 }
+
+/// `n` corners of a wavy star around `c` (many edges, concave), counter-clockwise.
+fn star(c: DVec2, r: f64, n: usize) -> Vec<DVec2> {
+    (0..n)
+        .map(|i| {
+            let t = std::f64::consts::TAU * i as f64 / n as f64;
+            c + DVec2::new(t.cos(), t.sin()) * r * (1.0 + 0.3 * (7.0 * t).cos())
+        })
+        .collect()
+}
+
+fn same_nearest(a: polygon::Nearest, b: polygon::Nearest, q: DVec2) {
+    assert_eq!(a.distance.to_bits(), b.distance.to_bits(), "{q}");
+    assert_eq!(a.gradient, b.gradient, "{q}");
+    assert_eq!((a.ring, a.edge), (b.ring, b.edge), "{q}");
+    assert_eq!(a.lambda.to_bits(), b.lambda.to_bits(), "{q}");
+}
+
+#[test]
+fn the_edge_index_answers_exactly_as_the_plain_loop() {
+    // A wavy outline with a wavy hole and a square hole: 2000 + 300 + 4 edges.
+    let p = Polygon::new(
+        star(DVec2::ZERO, 2.0, 2000),
+        vec![
+            star(DVec2::new(0.3, 0.1), 0.5, 300),
+            square(DVec2::new(-1.0, 0.4), 0.2),
+        ],
+    )
+    .unwrap();
+    assert!(p.index.is_some());
+    let mut rng = Rng::new(61);
+    for _ in 0..20000 {
+        let q = DVec2::new(rng.next(), rng.next()) * 3.5;
+        same_nearest(p.nearest(q), p.nearest_plain(q), q);
+    }
+    // On corners, on edges, and on the crossing rays of corners (parity ties).
+    for l in p.loops() {
+        for (i, &c) in l.iter().enumerate().step_by(7) {
+            let d = l[(i + 1) % l.len()];
+            for q in [c, c.lerp(d, 0.5), c + DVec2::new(0.25, 0.0), c - DVec2::X] {
+                same_nearest(p.nearest(q), p.nearest_plain(q), q);
+            }
+        }
+    }
+}
+
+#[test]
+fn the_edge_index_breaks_ties_as_the_plain_loop() {
+    // A staircase on the unit lattice: many points at equal distances from several edges.
+    let mut outline = vec![DVec2::new(0.0, 0.0)];
+    for k in 0..40 {
+        let k = k as f64;
+        outline.push(DVec2::new(k + 1.0, k));
+        outline.push(DVec2::new(k + 1.0, k + 1.0));
+    }
+    outline.push(DVec2::new(0.0, 40.0));
+    let p = Polygon::new(outline, vec![]).unwrap();
+    assert!(p.index.is_some());
+    for i in -4..=180 {
+        for j in -4..=180 {
+            let q = DVec2::new(i as f64, j as f64) * 0.25;
+            same_nearest(p.nearest(q), p.nearest_plain(q), q);
+            let (a, b) = (
+                p.distance_gradient_off_axis(q),
+                loops_distance_skipping_plain(&p, q),
+            );
+            assert_eq!(a, b, "{q}");
+        }
+    }
+}
+
+/// The revolve's off-axis distance by the plain loop.
+fn loops_distance_skipping_plain(p: &Polygon, q: DVec2) -> (f64, DVec2) {
+    let n = polygon::loops_distance_skipping(
+        q,
+        p.loops().len(),
+        |r| p.loops()[r].len(),
+        |r, i| p.loops()[r][i],
+        |a, b| a.x == 0.0 && b.x == 0.0,
+    );
+    (n.distance, n.gradient)
+}

@@ -11,22 +11,44 @@
 //!   union of those balls' boxes.
 //!
 //! `f` is not a distance: `|f| / L` is a (conservative) distance bound.
+//!
+//! Many balls (from [`cull::MIN_BALLS`]): the field is the sum truncated where a term falls below
+//! `T · 2⁻⁶⁰ / N` (at most `T · 2⁻⁶⁰` in all, `cull.rs`), and values, gradients and intervals visit
+//! only the balls whose reach meets the point, chunk or box, so a sample costs the balls near it
+//! rather than all of them.
 
 mod ball;
+mod cull;
 
 pub use ball::Ball;
 
 use super::{PrimitiveError, Shape, positive};
 use crate::{Aabb, Interval};
+use cull::Cull;
 use glam::DVec3;
+use std::cell::RefCell;
+
+thread_local! {
+    /// The ball indices of the current query (no allocation per sample).
+    static NEAR: RefCell<Vec<u32>> = const { RefCell::new(Vec::new()) };
+}
 
 /// A blobby object: the solid where the balls' summed field reaches the threshold.
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone)]
 pub struct Blob {
     balls: Vec<Ball>,
     threshold: f64,
     lipschitz: f64,
     bbox: Aabb,
+    /// The balls' reach index (many balls only).
+    cull: Option<Cull>,
+}
+
+impl PartialEq for Blob {
+    fn eq(&self, other: &Self) -> bool {
+        // Everything else is derived from the balls and the threshold.
+        self.balls == other.balls && self.threshold == other.threshold
+    }
 }
 
 impl Blob {
@@ -53,11 +75,13 @@ impl Blob {
         }
         let bbox = density_box(&balls, threshold);
         let lipschitz = balls.iter().map(Ball::max_slope).sum();
+        let cull = Cull::new(&balls, threshold);
         Ok(Self {
             balls,
             threshold,
             lipschitz,
             bbox,
+            cull,
         })
     }
 
@@ -71,10 +95,48 @@ impl Blob {
         self.threshold
     }
 
-    /// `Σ b_k exp(−a_k r_k²)` at `p`.
+    /// `Σ b_k exp(−a_k r_k²)` at `p` (every term).
     pub fn density(&self, p: DVec3) -> f64 {
         self.balls.iter().map(|b| b.term(p)).sum()
     }
+
+    /// The balls' terms at `p`, summed in input order: every term, or with an index the
+    /// truncated sum (`cull.rs`; within `T · 2⁻⁶⁰` of [`Blob::density`]).
+    fn sum_terms<T: std::ops::Add<Output = T>>(
+        &self,
+        p: DVec3,
+        zero: T,
+        term: impl Fn(&Ball, DVec3) -> T,
+    ) -> T {
+        let Some(cull) = &self.cull else {
+            return self.balls.iter().fold(zero, |acc, b| acc + term(b, p));
+        };
+        with_near(cull, p, p, |near| {
+            near.iter().fold(zero, |acc, &k| {
+                let b = &self.balls[k as usize];
+                if b.sharpness * p.distance_squared(b.center) < cull.cutoff(k as usize) {
+                    acc + term(b, p)
+                } else {
+                    acc
+                }
+            })
+        })
+    }
+}
+
+/// Runs `f` with the indices of the balls whose reach box meets `[lo, hi]`, ascending.
+fn with_near<R>(cull: &Cull, lo: DVec3, hi: DVec3, f: impl FnOnce(&[u32]) -> R) -> R {
+    NEAR.with(|cell| match cell.try_borrow_mut() {
+        Ok(mut near) => {
+            cull.near(lo, hi, &mut near);
+            f(&near)
+        }
+        Err(_) => {
+            let mut near = Vec::new();
+            cull.near(lo, hi, &mut near);
+            f(&near)
+        }
+    })
 }
 
 /// A box holding every point where the density reaches `t > 0`: with `S` the sum of the
@@ -94,20 +156,23 @@ fn density_box(balls: &[Ball], t: f64) -> Aabb {
 
 impl Shape for Blob {
     fn value(&self, p: DVec3) -> f64 {
-        self.threshold - self.density(p)
+        self.threshold - self.sum_terms(p, 0.0, Ball::term)
     }
     fn gradient(&self, p: DVec3) -> DVec3 {
-        -self
-            .balls
-            .iter()
-            .fold(DVec3::ZERO, |acc, b| acc + b.term_gradient(p))
+        -self.sum_terms(p, DVec3::ZERO, Ball::term_gradient)
     }
     fn interval(&self, b: &Aabb) -> Interval {
-        let sum = self
-            .balls
-            .iter()
-            .fold(Interval::point(0.0), |acc, ball| acc + ball.term_range(b));
-        Interval::point(self.threshold) - sum
+        let zero = Interval::point(0.0);
+        let Some(cull) = &self.cull else {
+            let sum = (self.balls.iter()).fold(zero, |acc, ball| acc + ball.term_range(b));
+            return Interval::point(self.threshold) - sum;
+        };
+        let sum = with_near(cull, b.min, b.max, |near| {
+            near.iter()
+                .fold(zero, |acc, &k| acc + self.balls[k as usize].term_range(b))
+        });
+        let tail = cull.tail();
+        Interval::point(self.threshold) - Interval::new(sum.lo - tail, sum.hi + tail)
     }
     fn bbox(&self) -> Aabb {
         self.bbox
@@ -134,15 +199,48 @@ impl Shape for Blob {
         let n = out.len().min(x.len()).min(y.len()).min(z.len());
         let out = &mut out[..n];
         out.fill(self.threshold as f32);
-        for ball in &self.balls {
-            let c = ball.center.as_vec3();
-            let (a, s) = (ball.sharpness as f32, ball.strength as f32);
-            for (i, o) in out.iter_mut().enumerate() {
-                let (dx, dy, dz) = (x[i] - c.x, y[i] - c.y, z[i] - c.z);
-                *o -= s * (-a * (dx * dx + dy * dy + dz * dz)).exp();
+        let Some(cull) = &self.cull else {
+            for ball in &self.balls {
+                let c = ball.center.as_vec3();
+                let (a, s) = (ball.sharpness as f32, ball.strength as f32);
+                for (i, o) in out.iter_mut().enumerate() {
+                    let (dx, dy, dz) = (x[i] - c.x, y[i] - c.y, z[i] - c.z);
+                    *o -= s * (-a * (dx * dx + dy * dy + dz * dz)).exp();
+                }
             }
+            return;
+        };
+        if n == 0 {
+            return;
         }
+        let (lo, hi) = chunk_box(&x[..n], &y[..n], &z[..n]);
+        with_near(cull, lo, hi, |near| {
+            for &k in near {
+                let ball = &self.balls[k as usize];
+                let c = ball.center.as_vec3();
+                let (a, s) = (ball.sharpness as f32, ball.strength as f32);
+                let cutoff = cull.cutoff_f32(k as usize);
+                for (i, o) in out.iter_mut().enumerate() {
+                    let (dx, dy, dz) = (x[i] - c.x, y[i] - c.y, z[i] - c.z);
+                    let e = a * (dx * dx + dy * dy + dz * dz);
+                    if e < cutoff {
+                        *o -= s * (-e).exp();
+                    }
+                }
+            }
+        });
     }
+}
+
+/// The box of a chunk of points (`n > 0`).
+fn chunk_box(x: &[f32], y: &[f32], z: &[f32]) -> (DVec3, DVec3) {
+    let (mut lo, mut hi) = (glam::Vec3::INFINITY, glam::Vec3::NEG_INFINITY);
+    for i in 0..x.len() {
+        let p = glam::Vec3::new(x[i], y[i], z[i]);
+        lo = lo.min(p);
+        hi = hi.max(p);
+    }
+    (lo.as_dvec3(), hi.as_dvec3())
 }
 
 #[cfg(test)]

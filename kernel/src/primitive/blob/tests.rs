@@ -137,3 +137,94 @@ fn batch_path_matches_scalar_on_many_points() {
         assert!((*o as f64 - blob.value(*p)).abs() < 1e-5);
     }
 }
+
+/// `n` balls of mixed strengths and sharpnesses scattered in a cube of side `side`.
+fn scattered(n: usize, side: f64, seed: u64) -> Blob {
+    let mut rng = Rng::new(seed);
+    let balls = (0..n)
+        .map(|k| Ball {
+            center: DVec3::splat(0.5 * side) + rng.vec(0.5 * side),
+            strength: if k % 7 == 3 {
+                -0.5
+            } else {
+                1.0 + 0.5 * rng.next()
+            },
+            sharpness: 3.0 + 2.0 * rng.next(),
+        })
+        .collect();
+    Blob::new(balls, 0.5).unwrap()
+}
+
+/// The batch values of every term, as before culling (the reference).
+fn full_values_f32(blob: &Blob, x: &[f32], y: &[f32], z: &[f32]) -> Vec<f32> {
+    let mut out = vec![blob.threshold() as f32; x.len()];
+    for ball in blob.balls() {
+        let c = ball.center.as_vec3();
+        let (a, s) = (ball.sharpness as f32, ball.strength as f32);
+        for (i, o) in out.iter_mut().enumerate() {
+            let (dx, dy, dz) = (x[i] - c.x, y[i] - c.y, z[i] - c.z);
+            *o -= s * (-a * (dx * dx + dy * dy + dz * dz)).exp();
+        }
+    }
+    out
+}
+
+#[test]
+fn many_balls_are_culled_and_each_sample_has_the_same_bits_in_any_chunk() {
+    let blob = scattered(400, 12.0, 41);
+    assert!(blob.cull.is_some());
+    let mut rng = Rng::new(43);
+    // Chunks of nearby points (as the mesher sends them) and of scattered ones.
+    for spread in [0.05, 0.5, 3.0, 20.0] {
+        for _ in 0..40 {
+            let centre = DVec3::splat(6.0) + rng.vec(7.0);
+            let pts: Vec<DVec3> = (0..256).map(|_| centre + rng.vec(spread)).collect();
+            let x: Vec<f32> = pts.iter().map(|p| p.x as f32).collect();
+            let y: Vec<f32> = pts.iter().map(|p| p.y as f32).collect();
+            let z: Vec<f32> = pts.iter().map(|p| p.z as f32).collect();
+            let mut out = vec![0f32; pts.len()];
+            blob.values_f32(&x, &y, &z, &mut out);
+            let full = full_values_f32(&blob, &x, &y, &z);
+            for i in 0..out.len() {
+                // Alone, the point gets the bits it got in the chunk.
+                let mut one = [0f32];
+                blob.values_f32(&x[i..=i], &y[i..=i], &z[i..=i], &mut one);
+                assert_eq!(one[0].to_bits(), out[i].to_bits(), "{}", pts[i]);
+                // The truncated sum is the full sum up to single-precision rounding.
+                assert!(
+                    (out[i] - full[i]).abs() <= 4e-6,
+                    "{}: {} {}",
+                    pts[i],
+                    out[i],
+                    full[i]
+                );
+            }
+            for p in &pts {
+                let (v, exact) = (blob.value(*p), blob.threshold() - blob.density(*p));
+                assert!((v - exact).abs() <= 1e-15, "{p}: {v} vs {exact}");
+            }
+        }
+    }
+}
+
+#[test]
+fn many_balls_conform_and_their_culled_intervals_hold() {
+    let blob = scattered(200, 8.0, 47);
+    assert!(blob.cull.is_some());
+    check_shape(&blob, 6.0);
+    let mut rng = Rng::new(53);
+    for _ in 0..300 {
+        let c = DVec3::splat(4.0) + rng.vec(6.0);
+        let h = DVec3::splat(0.01) + rng.vec(1.0).abs();
+        let b = Aabb::new(c - h, c + h);
+        let iv = blob.interval(&b);
+        // The full sum of exact term ranges is inside the culled interval.
+        let full = blob
+            .balls()
+            .iter()
+            .fold(Interval::point(0.0), |acc, ball| acc + ball.term_range(&b));
+        let full = Interval::point(blob.threshold()) - full;
+        assert!(iv.lo <= full.lo && full.hi <= iv.hi, "{iv:?} {full:?}");
+        assert!(iv.hi - iv.lo <= full.hi - full.lo + 1e-12);
+    }
+}
