@@ -36,6 +36,20 @@ pub enum HeightFieldError {
         /// The first row's length.
         expected: usize,
     },
+    /// A Bézier net whose evaluation costs too much per point.
+    #[error(
+        "a {nx} × {ny} Bézier control net costs {} multiply-adds at every evaluated point (at most \
+         {} control heights, e.g. 64 × 64); give dense height data as \"samples\" (bicubic for a \
+         smooth surface), which cost the same at any size",
+        nx * ny,
+        super::MAX_CONTROL_HEIGHTS
+    )]
+    TooManyControlHeights {
+        /// Columns given.
+        nx: usize,
+        /// Rows given.
+        ny: usize,
+    },
     /// A NaN or infinite height.
     #[error("heights: value at column {column}, row {row} is not finite")]
     NonFinite {

@@ -20,6 +20,7 @@ mod png_map;
 mod sampled;
 mod source;
 
+pub use bezier::MAX_CONTROL_HEIGHTS;
 pub use error::HeightFieldError;
 pub use grid::HeightGrid;
 pub use png_map::{
@@ -83,6 +84,14 @@ impl HeightField {
         }
         if !base.is_finite() {
             return Err(parameter("base", "expected a finite number"));
+        }
+        if let HeightSource::Bezier(g) = &source
+            && g.nx().saturating_mul(g.ny()) > MAX_CONTROL_HEIGHTS
+        {
+            return Err(HeightFieldError::TooManyControlHeights {
+                nx: g.nx(),
+                ny: g.ny(),
+            });
         }
         let bounds = source.bounds();
         if bounds.hi.partial_cmp(&base) != Some(std::cmp::Ordering::Greater) {
@@ -279,10 +288,42 @@ impl HeightField {
     }
 }
 
+impl HeightField {
+    /// The field at `p` given `h = h(p.x, p.y)`.
+    #[inline]
+    fn value_over(&self, p: DVec3, h: f64) -> f64 {
+        let top = (p.z - h) * self.scale;
+        top.max(self.cuboid.value(p - self.center))
+    }
+}
+
+/// Slots of the column cache of [`HeightField::values_f32`] (a power of two).
+const COLUMN_SLOTS: usize = 256;
+
 impl Shape for HeightField {
     fn value(&self, p: DVec3) -> f64 {
-        let top = (p.z - self.height(p.x, p.y)) * self.scale;
-        top.max(self.cuboid.value(p - self.center))
+        self.value_over(p, self.height(p.x, p.y))
+    }
+    /// Samples of a brick share their columns: `h` is computed once per column met in the chunk
+    /// (a direct-mapped cache keyed by the coordinates' bits, so every value is the one
+    /// [`Shape::value`] gives).
+    fn values_f32(&self, x: &[f32], y: &[f32], z: &[f32], out: &mut [f32]) {
+        let mut keys = [0u64; COLUMN_SLOTS];
+        let mut heights = [0f64; COLUMN_SLOTS];
+        let mut filled = [false; COLUMN_SLOTS];
+        for (i, o) in out.iter_mut().enumerate() {
+            let key = (u64::from(x[i].to_bits()) << 32) | u64::from(y[i].to_bits());
+            let slot = (key.wrapping_mul(0x9E37_79B9_7F4A_7C15) >> 56) as usize % COLUMN_SLOTS;
+            let p = DVec3::new(x[i] as f64, y[i] as f64, z[i] as f64);
+            let h = if filled[slot] && keys[slot] == key {
+                heights[slot]
+            } else {
+                let h = self.height(p.x, p.y);
+                (keys[slot], heights[slot], filled[slot]) = (key, h, true);
+                h
+            };
+            *o = self.value_over(p, h) as f32;
+        }
     }
     fn gradient(&self, p: DVec3) -> DVec3 {
         let (u, v) = self.uv(p.x, p.y);

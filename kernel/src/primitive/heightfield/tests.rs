@@ -427,3 +427,71 @@ fn the_largest_allowed_image_decodes() {
     );
     assert!(decode_png(&wide).is_ok());
 }
+
+/// A Bézier height field over `[0, 2] × [0, 1]` with an `nx × ny` wavy net.
+fn wavy_bezier(nx: usize, ny: usize) -> Result<HeightField, HeightFieldError> {
+    let values = (0..nx * ny)
+        .map(|k| 0.5 + 0.2 * ((k % nx) as f64 * 0.7).sin() * ((k / nx) as f64 * 0.3).cos())
+        .collect();
+    let grid = HeightGrid::new(nx, ny, values)?;
+    HeightField::new(
+        DVec2::ZERO,
+        DVec2::new(2.0, 1.0),
+        0.0,
+        HeightSource::Bezier(grid),
+    )
+}
+
+#[test]
+fn bezier_heights_are_the_tensor_sum_and_batches_their_values() {
+    use crate::patch::bernstein::tensor_sum;
+    let mut rng = Rng::new(71);
+    for (nx, ny) in [(2, 2), (2, 5), (7, 3), (40, 33)] {
+        let hf = wavy_bezier(nx, ny).unwrap();
+        let g = hf.source().grid();
+        for _ in 0..200 {
+            let (u, v) = (0.5 + 0.6 * rng.next(), 0.5 + 0.6 * rng.next());
+            let (u, v) = (u.clamp(0.0, 1.0), v.clamp(0.0, 1.0));
+            let plain = tensor_sum(nx - 1, ny - 1, u, v, |i, j| g.get(i, j));
+            assert_eq!(bezier::height(g, u, v).to_bits(), plain.to_bits());
+        }
+        // Chunks of brick-like points: few columns, many heights, and some scattered points.
+        let mut pts = Vec::new();
+        for k in 0..300 {
+            let (i, j) = (k % 5, (k / 5) % 4);
+            pts.push(DVec3::new(
+                0.3 + 0.01 * i as f64,
+                0.4 + 0.01 * j as f64,
+                0.01 * k as f64,
+            ));
+            pts.push(DVec3::new(1.0, 0.5, 0.0) + rng.vec(1.2));
+        }
+        let x: Vec<f32> = pts.iter().map(|p| p.x as f32).collect();
+        let y: Vec<f32> = pts.iter().map(|p| p.y as f32).collect();
+        let z: Vec<f32> = pts.iter().map(|p| p.z as f32).collect();
+        let mut out = vec![0f32; pts.len()];
+        hf.values_f32(&x, &y, &z, &mut out);
+        for i in 0..pts.len() {
+            let p = DVec3::new(x[i] as f64, y[i] as f64, z[i] as f64);
+            assert_eq!(out[i].to_bits(), (hf.value(p) as f32).to_bits(), "{p}");
+        }
+    }
+}
+
+#[test]
+fn bezier_nets_beyond_the_evaluation_budget_are_refused() {
+    assert!(wavy_bezier(256, 256).is_ok());
+    let e = wavy_bezier(257, 256).unwrap_err();
+    assert!(
+        matches!(
+            e,
+            HeightFieldError::TooManyControlHeights { nx: 257, ny: 256 }
+        ),
+        "{e}"
+    );
+    let text = e.to_string();
+    assert!(
+        text.contains("257 × 256") && text.contains("65792"),
+        "{text}"
+    );
+}
