@@ -438,3 +438,7 @@ fn a_far_translated_gyroid_is_the_gyroid_at_its_reduced_offset() {
         assert_eq!(a["shells"], b["shells"], "{method}");
     }
 }
+
+/// Small inputs with huge evaluation cost: many balls, many polygon edges, dense Bézier nets.
+#[path = "cli_hostile_cost.rs"]
+mod cost;
