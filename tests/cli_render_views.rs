@@ -219,6 +219,9 @@ fn bad_views_are_refused() {
         &["--views", "2"][..],
         &["--views", "4", "--size", "10x10"],
         &["--views", "4", "--size", "100000x100000"],
+        &["--views", "4", "--view", "top"],
+        &["--section", "z=0.1", "--edges"],
+        &["--section", "z=0.1", "--views", "4"],
     ] {
         let mut args = vec!["render", path_str(&input), "-o", path_str(&out)];
         args.extend(extra);

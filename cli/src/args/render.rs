@@ -23,7 +23,7 @@ pub struct RenderArgs {
     pub view: View,
     /// 1: the --view alone; 4: a 2x2 sheet of the iso, front, top and side views, each
     /// labelled, filling --size together.
-    #[arg(long, default_value_t = 1, value_parser = parse_views)]
+    #[arg(long, default_value_t = 1, value_parser = parse_views, conflicts_with = "view")]
     pub views: u32,
     /// Draw feature edges: silhouettes, creases sharper than 40 degrees, occlusion steps.
     #[arg(long)]
@@ -33,7 +33,8 @@ pub struct RenderArgs {
     pub axes: bool,
     /// Draw the cross-section x=C, y=C or z=C (filled by sign, zero contour dark) instead of
     /// the solid (trees, scripts and .csg only).
-    #[arg(long, value_parser = parse_section, allow_hyphen_values = true)]
+    #[arg(long, value_parser = parse_section, allow_hyphen_values = true,
+          conflicts_with_all = ["views", "edges", "axes", "view"])]
     pub section: Option<Section>,
     /// Frame the box x0,y0,z0,x1,y1,z1 instead of the bounding box; a solid is clipped to it
     /// (needed for unbounded solids such as half-spaces).
