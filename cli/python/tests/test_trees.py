@@ -118,3 +118,14 @@ def test_scad_files_load_through_openscad_with_defines(tmp_path):
         return
     assert list(sk.load(f).bbox[1]) == [1.0, 2.0, 3.0]
     assert list(sk.load(f, defines=["s=5"]).bbox[1]) == [5.0, 2.0, 3.0]
+
+
+def test_formula_solids_through_node():
+    # The implicit equation of a torus, cut by its box: genus 1, volume 2 pi^2 R r^2.
+    torus = sk.node("expr", formula="(sqrt(x^2 + y^2) - 1)^2 + z^2 - 0.3^2",
+                    bounds=[[-1.5, -1.5, -0.5], [1.5, 1.5, 0.5]])
+    r = torus.mesh(resolution=96).report()
+    assert r["genus"] == 1 and r["closed"]
+    assert abs(r["volume"] - 2 * math.pi ** 2 * 0.09) < 0.01 * 2 * math.pi ** 2 * 0.09
+    with pytest.raises(sk.LoadError, match="unknown name 'q'"):
+        sk.node("expr", formula="x + q", bounds=[[0, 0, 0], [1, 1, 1]])

@@ -13,6 +13,7 @@ use crate::{KernelError, solid};
 use glam::DVec3;
 
 mod blob;
+mod expr;
 mod heightfield;
 mod polyhedra;
 mod quadric;
@@ -505,6 +506,7 @@ impl Params<'_, '_> {
             "polyhedron" => self.polyhedron()?,
             "mesh" => self.mesh_file()?,
             "prism" => self.prism()?,
+            "expr" => self.expr()?,
             other => {
                 let t = self.at("type")?;
                 return Err(self.fail(t, "type", format!("unknown node type \"{other}\"")));

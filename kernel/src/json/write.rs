@@ -104,6 +104,12 @@ fn members(kind: &NodeKind) -> String {
             Primitive::Sweep(s) => sweep::sweep(s),
             Primitive::Loft(l) => sweep::loft(l),
             Primitive::Ruled(r) => sweep::ruled(r),
+            Primitive::Expr(e) => format!(
+                "\"formula\": {}, \"bounds\": [{}, {}]",
+                string(e.formula()),
+                vec3(e.bounds().min),
+                vec3(e.bounds().max)
+            ),
         },
         NodeKind::Union | NodeKind::Intersection | NodeKind::Difference => String::new(),
         NodeKind::SmoothUnion { radius }

@@ -16,11 +16,13 @@
 //! | blob (metaballs) | `T − Σ bₖ exp(−aₖ rₖ²)` | `Σ |bₖ| √(2aₖ) e^{−1/2}` | 0 |
 //! | height field | `(z − h) / √(1 + L_h²)` with the box sides | 1 | 0 (h as interpolated) |
 //! | extrude, revolve, sweep, loft, ruled | exact distance where cheap, else slice distance / L | see each type | 0 |
+//! | expr (formula) | `max(g(clamp p), d_box)`: a distance only if `g` is | `max(1, L_g)`, from interval derivatives | 0 |
 
 pub mod blob;
 mod cone;
 mod cuboid;
 mod cylinder;
+pub mod expr;
 mod gyroid;
 pub mod heightfield;
 mod plane;
@@ -34,6 +36,7 @@ pub use blob::Blob;
 pub use cone::Cone;
 pub use cuboid::Cuboid;
 pub use cylinder::Cylinder;
+pub use expr::Expr;
 pub use gyroid::{Gyroid, cos_f32, cos_interval, sin_f32, sin_interval, sincos_f32};
 pub use heightfield::HeightField;
 pub use plane::HalfSpace;
@@ -245,6 +248,8 @@ pub enum Primitive {
     Loft(Arc<Loft>),
     /// The solid bounded by the ruled surface between two closed plane curves.
     Ruled(Arc<Ruled>),
+    /// A formula `g(x, y, z) ≤ 0` cut by a box.
+    Expr(Arc<Expr>),
 }
 
 macro_rules! dispatch {
@@ -268,6 +273,7 @@ macro_rules! dispatch {
             Primitive::Sweep($s) => $e,
             Primitive::Loft($s) => $e,
             Primitive::Ruled($s) => $e,
+            Primitive::Expr($s) => $e,
         }
     };
 }
@@ -294,6 +300,7 @@ impl Primitive {
             Primitive::Sweep(_) => "sweep",
             Primitive::Loft(_) => "loft",
             Primitive::Ruled(_) => "ruled",
+            Primitive::Expr(_) => "expr",
         }
     }
 }

@@ -1,12 +1,14 @@
 //! The functions and methods scripts call: primitives, Booleans (functions on arrays and the
-//! operators `|`, `&`, `-`), transforms, blends, `node(map)` for every other family, `export`.
+//! operators `|`, `&`, `-`), transforms, blends, `expr` (formula solids), `node(map)` for every
+//! other family, `export`.
 
 use super::node;
 use super::shape::{Fallible, Shape, fail, num, num_or_vec3, shapes, vec3};
 use rhai::{Array, Dynamic, Engine, Map};
+use solidkit_kernel::Aabb;
 use solidkit_kernel::Solid;
 use solidkit_kernel::json::MeshResolver;
-use solidkit_kernel::primitive::{Gyroid, Primitive};
+use solidkit_kernel::primitive::{Expr, Gyroid, Primitive};
 use std::sync::{Arc, Mutex};
 
 /// Builds nodes within the tree-size budget.
@@ -123,6 +125,17 @@ fn primitives(engine: &mut Engine) {
             thickness: num(&t, "gyroid thickness")?,
         })))
     });
+    // `expr("x*x + y*y - z", [x0, y0, z0], [x1, y1, z1])`: a formula cut by a box.
+    engine.register_fn(
+        "expr",
+        |formula: &str, min: Dynamic, max: Dynamic| -> Fallible<Shape> {
+            let bounds = Aabb::new(vec3(&min, "expr min")?, vec3(&max, "expr max")?);
+            match Expr::new(formula, bounds) {
+                Ok(e) => leaf(Solid::primitive(Primitive::Expr(Arc::new(e)))),
+                Err(e) => fail(format!("expr: {e}")),
+            }
+        },
+    );
 }
 
 fn booleans(engine: &mut Engine, b: Budget) {

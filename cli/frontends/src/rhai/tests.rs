@@ -143,7 +143,8 @@ fn rhai_literal(v: &Value) -> String {
     }
 }
 
-const FAMILY_SAMPLES: [&str; 14] = [
+const FAMILY_SAMPLES: [&str; 15] = [
+    r#"{"type": "expr", "formula": "x*x + y*y - z", "bounds": [[-1, -1, -1], [1, 1, 1]]}"#,
     r#"{"type": "ellipsoid", "radii": [1.0, 0.7, 0.5]}"#,
     r#"{"type": "elliptic_cylinder", "radii": [0.7, 0.4], "bounds": [[-1, -1, -1], [1, 1, 1]]}"#,
     r#"{"type": "elliptic_cone", "radii": [0.9, 0.6], "bounds": [[-1, -1, -1], [1, 1, 1]]}"#,

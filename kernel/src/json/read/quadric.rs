@@ -101,7 +101,7 @@ impl Params<'_, '_> {
     }
 
     /// An optional box `[[x, y, z], [x, y, z]]` under `key`.
-    fn quadric_bounds(&self, key: &str) -> R<Option<Aabb>> {
+    pub(super) fn quadric_bounds(&self, key: &str) -> R<Option<Aabb>> {
         let Some((_, i)) = self.entries.iter().find(|(k, _)| k == key) else {
             return Ok(None);
         };
