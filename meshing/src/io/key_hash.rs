@@ -6,7 +6,7 @@
 use std::hash::{BuildHasherDefault, Hasher};
 
 /// Build hasher of [`KeyHasher`].
-pub(super) type KeyHash = BuildHasherDefault<KeyHasher>;
+pub(crate) type KeyHash = BuildHasherDefault<KeyHasher>;
 
 /// Mixes 128 bits of key into 64 bits of hash with a multiplier pair `k`.
 pub(super) fn fold(n: u128, k: [u64; 2]) -> u64 {
@@ -20,7 +20,7 @@ const K: [u64; 2] = [0x243f_6a88_85a3_08d3, 0x1319_8a2e_0370_7344];
 
 /// The hasher; see the [module docs](self).
 #[derive(Debug, Default, Clone, Copy)]
-pub(super) struct KeyHasher(u64);
+pub(crate) struct KeyHasher(u64);
 
 impl Hasher for KeyHasher {
     fn finish(&self) -> u64 {

@@ -28,7 +28,7 @@ mod faces;
 mod glb;
 mod glb_read;
 mod gltf_json;
-mod key_hash;
+pub(crate) mod key_hash;
 mod obj;
 mod obj_scan;
 mod off;

@@ -18,11 +18,6 @@ pub(super) fn directed(t: [u32; 3]) -> [(u32, u32); 3] {
     [(t[0], t[1]), (t[1], t[2]), (t[2], t[0])]
 }
 
-/// Whether triangle `t` traverses `a → b`.
-pub(super) fn has_directed(t: [u32; 3], a: u32, b: u32) -> bool {
-    directed(t).contains(&(a, b))
-}
-
 /// Undirected edge → the faces using it (in face order).
 pub(super) fn edge_faces(tris: &[[u32; 3]]) -> HashMap<(u32, u32), Vec<u32>> {
     let mut map: HashMap<(u32, u32), Vec<u32>> = HashMap::with_capacity(tris.len() * 3 / 2);

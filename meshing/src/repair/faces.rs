@@ -4,7 +4,10 @@
 use super::RepairCounts;
 use super::edges::{canonical, directed, key};
 use glam::DVec3;
-use std::collections::HashMap;
+use crate::io::key_hash::KeyHash;
+use crate::topology::EdgeTable;
+use rayon::prelude::*;
+use std::collections::{HashMap, HashSet};
 
 /// Whether the triangle has zero area by the topology report's rule
 /// (`|cross| <= 1e-12 * longest_edge²`).
@@ -26,6 +29,7 @@ pub(super) fn split_zero_area(
 ) {
     let corners = |t: [u32; 3]| t.map(|i| positions[i as usize]);
     let slivers: Vec<usize> = (0..tris.len())
+        .into_par_iter()
         .filter(|&f| is_zero_area(corners(tris[f])))
         .collect();
     if slivers.is_empty() {
@@ -90,12 +94,32 @@ fn remove_face(map: &mut HashMap<(u32, u32), Vec<u32>>, t: [u32; 3], id: u32) {
     }
 }
 
+/// Whether two faces have the same three vertices: such faces share every edge, so only the
+/// faces of edges used more than once are compared (runs longer than two are assumed to hold
+/// some, and [`remove_duplicates`] decides).
+pub(super) fn may_have_duplicates(tris: &[[u32; 3]], table: &EdgeTable) -> bool {
+    let sorted = |f: usize| {
+        let mut t = tris[f];
+        t.sort_unstable();
+        t
+    };
+    table.edges().any(|e| {
+        let mut corners = e.corners();
+        match (corners.next(), corners.next(), corners.next()) {
+            (Some(a), Some(b), None) => sorted(a / 3) == sorted(b / 3),
+            (_, _, Some(_)) => true,
+            _ => false,
+        }
+    })
+}
+
 /// Removes faces on the same three vertices as an earlier one. Copies of one winding cancel
 /// copies of the other (an internal double wall disappears); of the surplus winding one face
 /// stays. Returns how many faces were removed.
 pub(super) fn remove_duplicates(tris: &mut Vec<[u32; 3]>) -> usize {
     // Net count per vertex set: +1 for the winding of the set's first face, -1 for the other.
-    let mut net: HashMap<[u32; 3], (i64, [u32; 3])> = HashMap::with_capacity(tris.len());
+    let mut net: HashMap<[u32; 3], (i64, [u32; 3]), KeyHash> =
+        HashMap::with_capacity_and_hasher(tris.len(), KeyHash::default());
     for &t in tris.iter() {
         let c = canonical(t);
         let mut sorted = t;
@@ -104,7 +128,7 @@ pub(super) fn remove_duplicates(tris: &mut Vec<[u32; 3]>) -> usize {
         entry.0 += if entry.1 == c { 1 } else { -1 };
     }
     let before = tris.len();
-    let mut kept: std::collections::HashSet<[u32; 3]> = std::collections::HashSet::new();
+    let mut kept: HashSet<[u32; 3], KeyHash> = HashSet::default();
     tris.retain(|&t| {
         let mut sorted = t;
         sorted.sort_unstable();

@@ -3,7 +3,6 @@
 //! by the minimal-area triangulation of the loop (dynamic programming, up to
 //! [`MAX_DP_EDGES`] edges), else by a fan from its first vertex.
 
-use super::edges::{directed, edge_faces};
 use crate::io::triangulate_polygon;
 use glam::DVec3;
 use std::collections::HashMap;
@@ -20,19 +19,17 @@ pub(super) struct Filled {
     pub open: usize,
 }
 
-/// Fills every boundary loop of the (consistently oriented) faces.
-pub(super) fn fill_holes(positions: &[DVec3], tris: &mut Vec<[u32; 3]>) -> Filled {
-    let map = edge_faces(tris);
-    // Boundary half-edges a → b; the fill must traverse b → a.
+/// Fills every boundary loop of the (consistently oriented) faces, given their one-face edges
+/// `a → b` as the faces traverse them (the fill traverses `b → a`).
+pub(super) fn fill_holes(
+    positions: &[DVec3],
+    tris: &mut Vec<[u32; 3]>,
+    boundary: &[(u32, u32)],
+) -> Filled {
     let mut next: HashMap<u32, Vec<u32>> = HashMap::new();
-    let mut total = 0usize;
-    for t in tris.iter() {
-        for (a, b) in directed(*t) {
-            if map[&super::edges::key(a, b)].len() == 1 {
-                next.entry(a).or_default().push(b);
-                total += 1;
-            }
-        }
+    let total = boundary.len();
+    for &(a, b) in boundary {
+        next.entry(a).or_default().push(b);
     }
     let mut out = Filled::default();
     let mut starts: Vec<u32> = next.keys().copied().collect();

@@ -28,7 +28,10 @@ mod weld;
 mod tests;
 
 use crate::IndexedMesh;
+use crate::io::key_hash::KeyHash;
+use crate::topology::EdgeTable;
 use glam::DVec3;
+use std::collections::HashSet;
 
 pub use rebuild::{RebuildOptions, Rebuilt, rebuild};
 pub use weld::{WeldedMesh, weld_mesh};
@@ -149,13 +152,24 @@ pub fn repair_minimal(mesh: &IndexedMesh, opts: &MinimalOptions) -> Result<Repai
     }
     let original = tris.clone();
     faces::split_zero_area(&positions, &mut tris, &mut counts);
-    counts.duplicate_faces_removed = faces::remove_duplicates(&mut tris);
-    let split = split::split_non_manifold(&mut positions, &mut tris);
+    // One edge table serves the steps below; it is rebuilt only after a step changed the faces.
+    let mut table = EdgeTable::build(&tris[..]);
+    if faces::may_have_duplicates(&tris, &table) {
+        counts.duplicate_faces_removed = faces::remove_duplicates(&mut tris);
+        if counts.duplicate_faces_removed > 0 {
+            table = EdgeTable::build(&tris[..]);
+        }
+    }
+    let split = split::split_non_manifold(&mut positions, &mut tris, &table);
     counts.non_manifold_edges_cut = split.edges_cut;
     counts.non_manifold_vertices_split = split.vertices_split;
     counts.vertices_added_by_split = split.parent.len() - split.first_copy;
-    orient::orient_consistently(&mut tris);
-    let filled = holes::fill_holes(&positions, &mut tris);
+    if counts.vertices_added_by_split > 0 {
+        table = EdgeTable::build(&tris[..]);
+    }
+    let boundary = orient::orient_consistently(&mut tris, &table);
+    drop(table);
+    let filled = holes::fill_holes(&positions, &mut tris, &boundary);
     counts.holes_filled = filled.filled;
     counts.hole_triangles_added = filled.triangles;
     counts.largest_hole_edges = filled.largest;
@@ -188,8 +202,9 @@ pub fn repair_minimal(mesh: &IndexedMesh, opts: &MinimalOptions) -> Result<Repai
 /// Faces of `after` that appear in `before` with the opposite winding (by vertex set; split
 /// vertex copies are not in `before`, so their faces are not counted).
 fn count_flipped(before: &[[u32; 3]], after: &[[u32; 3]]) -> usize {
-    let set: std::collections::HashSet<[u32; 3]> =
-        before.iter().map(|&t| edges::canonical(t)).collect();
+    let mut set: HashSet<[u32; 3], KeyHash> =
+        HashSet::with_capacity_and_hasher(before.len(), KeyHash::default());
+    set.extend(before.iter().map(|&t| edges::canonical(t)));
     after
         .iter()
         .filter(|&&t| {

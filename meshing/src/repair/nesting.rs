@@ -25,11 +25,13 @@ pub(super) fn orient_shells(positions: &[DVec3], tris: &mut Vec<[u32; 3]>) -> us
         uf.union(t[0], t[1]);
         uf.union(t[1], t[2]);
     }
-    let mut index_of = std::collections::HashMap::new();
+    // Union-find root → shell (`u32::MAX`: none yet).
+    let mut index_of = vec![u32::MAX; positions.len()];
     let mut shells: Vec<Shell> = Vec::new();
     for (f, t) in tris.iter().enumerate() {
-        let root = uf.find(t[0]);
-        let s = *index_of.entry(root).or_insert_with(|| {
+        let root = uf.find(t[0]) as usize;
+        if index_of[root] == u32::MAX {
+            index_of[root] = shells.len() as u32;
             shells.push(Shell {
                 faces: Vec::new(),
                 volume: 0.0,
@@ -37,9 +39,8 @@ pub(super) fn orient_shells(positions: &[DVec3], tris: &mut Vec<[u32; 3]>) -> us
                 lo: DVec3::INFINITY,
                 hi: DVec3::NEG_INFINITY,
             });
-            shells.len() - 1
-        });
-        shells[s].faces.push(f);
+        }
+        shells[index_of[root] as usize].faces.push(f);
     }
     for s in &mut shells {
         let origin = positions[tris[s.faces[0]][0] as usize];

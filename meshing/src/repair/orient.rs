@@ -2,17 +2,26 @@
 //! wound so that it traverses the shared edge opposite to the face it was reached from.
 //! Non-orientable pieces keep the first winding found (the report still flags them).
 
-use super::edges::{edge_faces, has_directed};
+use crate::topology::{CornerLoops, EdgeTable};
 use std::collections::VecDeque;
 
-/// Re-winds faces so that every two-face edge is traversed once each way where possible.
-pub(super) fn orient_consistently(tris: &mut [[u32; 3]]) {
-    let map = edge_faces(tris);
-    let mut neighbours: Vec<Vec<(u32, u32, u32)>> = vec![Vec::new(); tris.len()];
-    for (&(a, b), faces) in &map {
-        if let [f, g] = faces[..] {
-            neighbours[f as usize].push((g, a, b));
-            neighbours[g as usize].push((f, a, b));
+/// Re-winds faces so that every two-face edge is traversed once each way where possible;
+/// `table` is the edge table of `tris`. Returns the edges used by one face only, as each face
+/// traverses them after the re-winding.
+pub(super) fn orient_consistently(tris: &mut [[u32; 3]], table: &EdgeTable) -> Vec<(u32, u32)> {
+    let loops: &[[u32; 3]] = tris;
+    // The corner across each two-face edge (`u32::MAX`: none).
+    let mut mate = vec![u32::MAX; loops.corner_count()];
+    let mut boundary = Vec::new();
+    for edge in table.edges() {
+        let mut corners = edge.corners();
+        match (corners.next(), corners.next(), corners.next()) {
+            (Some(c), None, _) => boundary.push(c),
+            (Some(c), Some(d), None) => {
+                mate[c] = d as u32;
+                mate[d] = c as u32;
+            }
+            _ => {}
         }
     }
     let mut flip = vec![false; tris.len()];
@@ -25,21 +34,34 @@ pub(super) fn orient_consistently(tris: &mut [[u32; 3]]) {
         seen[start] = true;
         queue.push_back(start);
         while let Some(f) = queue.pop_front() {
-            for &(g, a, b) in &neighbours[f] {
-                if seen[g as usize] {
+            for c in 3 * f..3 * f + 3 {
+                let m = mate[c];
+                if m == u32::MAX {
                     continue;
                 }
-                let f_ab = has_directed(tris[f], a, b) ^ flip[f];
-                let g_ab = has_directed(tris[g as usize], a, b);
-                flip[g as usize] = g_ab == f_ab;
-                seen[g as usize] = true;
-                queue.push_back(g as usize);
+                let g = m as usize / 3;
+                if seen[g] {
+                    continue;
+                }
+                // Both traverse the edge the same way: one of the two must turn.
+                let same = loops.origin(c) == loops.origin(m as usize);
+                flip[g] = flip[f] ^ same;
+                seen[g] = true;
+                queue.push_back(g);
             }
         }
     }
+    let open = boundary
+        .into_iter()
+        .map(|c| {
+            let (a, b) = (loops.origin(c), loops.dest(c));
+            if flip[c / 3] { (b, a) } else { (a, b) }
+        })
+        .collect();
     for (t, &fl) in tris.iter_mut().zip(&flip) {
         if fl {
             t.swap(1, 2);
         }
     }
+    open
 }

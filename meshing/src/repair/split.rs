@@ -2,8 +2,9 @@
 //! each vertex gets one copy per fan (group of its faces joined through its own edges).
 //! Union-find over face corners; no recursion.
 
-use super::edges::edge_faces;
+use crate::topology::{CornerLoops, EdgeTable};
 use glam::DVec3;
+use std::collections::{HashMap, HashSet};
 
 /// What the split did.
 pub(super) struct Split {
@@ -37,29 +38,40 @@ impl UnionFind {
     }
 }
 
-/// Cuts non-manifold edges and splits non-manifold vertices (appending copies to `positions`).
-pub(super) fn split_non_manifold(positions: &mut Vec<DVec3>, tris: &mut [[u32; 3]]) -> Split {
-    let map = edge_faces(tris);
-    let edges_cut = map.values().filter(|f| f.len() > 2).count();
-    let corner = |f: u32, v: u32, tris: &[[u32; 3]]| -> u32 {
-        let k = tris[f as usize].iter().position(|&x| x == v).unwrap_or(0);
-        f * 3 + k as u32
-    };
+/// Cuts non-manifold edges and splits non-manifold vertices (appending copies to `positions`);
+/// `table` is the edge table of `tris`.
+pub(super) fn split_non_manifold(
+    positions: &mut Vec<DVec3>,
+    tris: &mut [[u32; 3]],
+    table: &EdgeTable,
+) -> Split {
+    let loops: &[[u32; 3]] = tris;
+    let mut edges_cut = 0;
     let mut uf = UnionFind((0..tris.len() as u32 * 3).collect());
-    for (&(a, b), faces) in &map {
-        if let [f, g] = faces[..] {
-            for v in [a, b] {
-                let (cf, cg) = (corner(f, v, tris), corner(g, v, tris));
-                uf.union(cf, cg);
+    for edge in table.edges() {
+        let [lo, _] = edge.vertices();
+        let mut corners = edge.corners();
+        match (corners.next(), corners.next(), corners.next()) {
+            (Some(f), Some(g), None) => {
+                // The corners of the two faces at each end of the edge join.
+                let ends = |c: usize| {
+                    let n = loops.next(c);
+                    if loops.origin(c) == lo { [c, n] } else { [n, c] }
+                };
+                let (ef, eg) = (ends(f), ends(g));
+                uf.union(ef[0] as u32, eg[0] as u32);
+                uf.union(ef[1] as u32, eg[1] as u32);
             }
+            (_, _, Some(_)) => edges_cut += 1,
+            _ => {}
         }
     }
     let first_copy = positions.len();
     let mut parent: Vec<u32> = (0..positions.len() as u32).collect();
     // Per vertex, the fan root that keeps the original index.
     let mut owner = vec![u32::MAX; positions.len()];
-    let mut copy_of_root: std::collections::HashMap<u32, u32> = std::collections::HashMap::new();
-    let mut split_vertices = std::collections::HashSet::new();
+    let mut copy_of_root: HashMap<u32, u32> = HashMap::new();
+    let mut split_vertices = HashSet::new();
     for (f, t) in tris.iter_mut().enumerate() {
         for (k, v) in t.iter_mut().enumerate() {
             let root = uf.find((f * 3 + k) as u32);

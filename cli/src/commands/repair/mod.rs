@@ -11,7 +11,7 @@ use report::{changes_text, mode_name, rebuild_json};
 use serde_json::json;
 use solidkit_meshing::io::{read_mesh, write_mesh};
 use solidkit_meshing::repair::{MinimalOptions, RebuildOptions, rebuild, repair_minimal};
-use solidkit_meshing::{IndexedMesh, TopologyReport};
+use solidkit_meshing::{IndexedMesh, ReportOptions, TopologyReport};
 
 /// Default rebuild resolution (cells along the longest side).
 const DEFAULT_RESOLUTION: usize = 128;
@@ -28,7 +28,14 @@ pub fn run(a: &RepairArgs) -> Result<u8> {
     if input.triangles.is_empty() {
         return Err(anyhow!("{name}: the mesh has no faces"));
     }
-    let before = TopologyReport::of(&input);
+    // The input's self-intersections are not tested (as costly as the rest of the repair on a
+    // large mesh, and minimal repair keeps them: the result's report has them).
+    let before = TopologyReport::with_options(
+        &input,
+        &ReportOptions {
+            self_intersections: false,
+        },
+    );
     let diagonal = bbox_diagonal(&input);
     let weld = a.weld.unwrap_or(DEFAULT_WELD * diagonal);
     // A mesh without any enclosing shell is bad input in every mode.
