@@ -91,6 +91,10 @@ pub struct RepairArgs {
     /// Rebuild: cell size and dual contouring's collapse tolerance (model units).
     #[arg(long, value_parser = parse_tolerance)]
     pub tolerance: Option<f64>,
+    /// Skip the self-intersection test of the result (then exit 0 means closed, oriented and
+    /// manifold, self-intersections not checked; auto mode rebuilds only for the other defects).
+    #[arg(long)]
+    pub no_self_intersections: bool,
     /// Print JSON: {"before", "after", "changes", "rebuild", ...}.
     #[arg(long)]
     pub json: bool,

@@ -22,9 +22,11 @@ pub(super) fn is_zero_area(p: [DVec3; 3]) -> bool {
 
 /// Removes zero-area faces; the other faces on the long edge of each are split at its middle
 /// corner first, so the surface keeps no crack (a T-junction becomes shared vertices).
+/// `src` runs along `tris` (the input face of each, `u32::MAX` for the new halves).
 pub(super) fn split_zero_area(
     positions: &[DVec3],
     tris: &mut Vec<[u32; 3]>,
+    src: &mut Vec<u32>,
     counts: &mut RepairCounts,
 ) {
     let corners = |t: [u32; 3]| t.map(|i| positions[i as usize]);
@@ -71,6 +73,7 @@ pub(super) fn split_zero_area(
             for nt in [[x, m, c], [m, y, c]] {
                 let id = tris.len() as u32;
                 tris.push(nt);
+                src.push(u32::MAX);
                 alive.push(true);
                 for (u, v) in directed(nt) {
                     map.entry(key(u, v)).or_default().push(id);
@@ -79,11 +82,21 @@ pub(super) fn split_zero_area(
             counts.faces_split_at_zero_area += 1;
         }
     }
-    let mut f = 0;
-    tris.retain(|_| {
-        f += 1;
-        alive[f - 1]
-    });
+    retain(tris, src, |f, _| alive[f]);
+}
+
+/// Keeps the faces (and their entries in `src`) for which `keep(index, face)` holds.
+fn retain(tris: &mut Vec<[u32; 3]>, src: &mut Vec<u32>, mut keep: impl FnMut(usize, [u32; 3]) -> bool) {
+    let mut kept = 0;
+    for f in 0..tris.len() {
+        if keep(f, tris[f]) {
+            tris[kept] = tris[f];
+            src[kept] = src[f];
+            kept += 1;
+        }
+    }
+    tris.truncate(kept);
+    src.truncate(kept);
 }
 
 fn remove_face(map: &mut HashMap<(u32, u32), Vec<u32>>, t: [u32; 3], id: u32) {
@@ -115,8 +128,8 @@ pub(super) fn may_have_duplicates(tris: &[[u32; 3]], table: &EdgeTable) -> bool 
 
 /// Removes faces on the same three vertices as an earlier one. Copies of one winding cancel
 /// copies of the other (an internal double wall disappears); of the surplus winding one face
-/// stays. Returns how many faces were removed.
-pub(super) fn remove_duplicates(tris: &mut Vec<[u32; 3]>) -> usize {
+/// stays. Returns how many faces were removed; `src` runs along `tris`.
+pub(super) fn remove_duplicates(tris: &mut Vec<[u32; 3]>, src: &mut Vec<u32>) -> usize {
     // Net count per vertex set: +1 for the winding of the set's first face, -1 for the other.
     let mut net: HashMap<[u32; 3], (i64, [u32; 3]), KeyHash> =
         HashMap::with_capacity_and_hasher(tris.len(), KeyHash::default());
@@ -129,7 +142,7 @@ pub(super) fn remove_duplicates(tris: &mut Vec<[u32; 3]>) -> usize {
     }
     let before = tris.len();
     let mut kept: HashSet<[u32; 3], KeyHash> = HashSet::default();
-    tris.retain(|&t| {
+    retain(tris, src, |_, t| {
         let mut sorted = t;
         sorted.sort_unstable();
         let (n, first) = net[&sorted];

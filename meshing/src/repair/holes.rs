@@ -13,6 +13,9 @@ pub const MAX_DP_EDGES: usize = 400;
 /// What the filling did.
 #[derive(Debug, Default)]
 pub(super) struct Filled {
+    /// Copies of one split vertex found on one loop, merged (`from`, `to`); see
+    /// [`split_at_copies`].
+    pub merged: Vec<(u32, u32)>,
     pub filled: usize,
     pub triangles: usize,
     pub largest: usize,
@@ -20,11 +23,13 @@ pub(super) struct Filled {
 }
 
 /// Fills every boundary loop of the (consistently oriented) faces, given their one-face edges
-/// `a → b` as the faces traverse them (the fill traverses `b → a`).
+/// `a → b` as the faces traverse them (the fill traverses `b → a`); `parent` gives each
+/// vertex the vertex it was copied from by the non-manifold split (itself for the others).
 pub(super) fn fill_holes(
     positions: &[DVec3],
     tris: &mut Vec<[u32; 3]>,
     boundary: &[(u32, u32)],
+    parent: &[u32],
 ) -> Filled {
     let mut next: HashMap<u32, Vec<u32>> = HashMap::new();
     let total = boundary.len();
@@ -55,13 +60,75 @@ pub(super) fn fill_holes(
                 continue;
             }
             loop_.reverse();
-            let added = triangulate_loop(positions, &loop_, tris);
-            out.filled += 1;
-            out.triangles += added;
-            out.largest = out.largest.max(loop_.len());
+            for piece in split_at_copies(loop_, parent, &mut out.merged) {
+                if piece.len() < 3 {
+                    continue;
+                }
+                let added = triangulate_loop(positions, &piece, tris);
+                out.filled += 1;
+                out.triangles += added;
+                out.largest = out.largest.max(piece.len());
+            }
+        }
+    }
+    if !out.merged.is_empty() {
+        let mut to: HashMap<u32, u32> = out.merged.iter().copied().collect();
+        // Merges always go to the smaller index, so following them ends.
+        let resolve = |mut v: u32, to: &HashMap<u32, u32>| {
+            while let Some(&w) = to.get(&v) {
+                v = w;
+            }
+            v
+        };
+        let keys: Vec<u32> = to.keys().copied().collect();
+        for k in keys {
+            let r = resolve(k, &to);
+            to.insert(k, r);
+        }
+        for t in tris.iter_mut() {
+            *t = t.map(|v| to.get(&v).copied().unwrap_or(v));
         }
     }
     out
+}
+
+/// A boundary loop through two copies of one split vertex (two holes meeting at a vertex, whose
+/// faces form two open fans there, so the split gave it a copy per fan) is cut there into two
+/// loops, and the two copies become one vertex again (recorded in `merged` as (larger, smaller)
+/// index): once both holes are filled, the vertex has one closed fan. Without this the copies
+/// would stay apart by a few rounding units, their fans touching without sharing a vertex.
+fn split_at_copies(loop_: Vec<u32>, parent: &[u32], merged: &mut Vec<(u32, u32)>) -> Vec<Vec<u32>> {
+    let of = |v: u32| parent.get(v as usize).copied().unwrap_or(v);
+    let mut work = vec![loop_];
+    let mut done = Vec::new();
+    while let Some(l) = work.pop() {
+        let mut first: HashMap<u32, usize> = HashMap::with_capacity(l.len());
+        let mut cut = None;
+        for (k, &v) in l.iter().enumerate() {
+            if let Some(&i) = first.get(&of(v)) {
+                cut = Some((i, k));
+                break;
+            }
+            first.insert(of(v), k);
+        }
+        let Some((i, j)) = cut else {
+            done.push(l);
+            continue;
+        };
+        let to = l[i].min(l[j]);
+        let from = l[i].max(l[j]);
+        if from != to {
+            merged.push((from, to));
+        }
+        let mut a = vec![to];
+        a.extend_from_slice(&l[i + 1..j]);
+        let mut b = vec![to];
+        b.extend_from_slice(&l[j + 1..]);
+        b.extend_from_slice(&l[..i]);
+        work.push(a);
+        work.push(b);
+    }
+    done
 }
 
 /// Triangulates the polygon `corners` (winding kept) into `tris`; returns the triangles added.

@@ -28,10 +28,8 @@ mod weld;
 mod tests;
 
 use crate::IndexedMesh;
-use crate::io::key_hash::KeyHash;
 use crate::topology::EdgeTable;
 use glam::DVec3;
-use std::collections::HashSet;
 
 pub use rebuild::{RebuildOptions, Rebuilt, rebuild};
 pub use weld::{WeldedMesh, weld_mesh};
@@ -150,12 +148,13 @@ pub fn repair_minimal(mesh: &IndexedMesh, opts: &MinimalOptions) -> Result<Repai
             faces: mesh.triangles.len(),
         });
     }
-    let original = tris.clone();
-    faces::split_zero_area(&positions, &mut tris, &mut counts);
+    // The input face of each face (`u32::MAX`: added by the repair), to count reversed faces.
+    let mut src: Vec<u32> = (0..tris.len() as u32).collect();
+    faces::split_zero_area(&positions, &mut tris, &mut src, &mut counts);
     // One edge table serves the steps below; it is rebuilt only after a step changed the faces.
     let mut table = EdgeTable::build(&tris[..]);
     if faces::may_have_duplicates(&tris, &table) {
-        counts.duplicate_faces_removed = faces::remove_duplicates(&mut tris);
+        counts.duplicate_faces_removed = faces::remove_duplicates(&mut tris, &mut src);
         if counts.duplicate_faces_removed > 0 {
             table = EdgeTable::build(&tris[..]);
         }
@@ -167,18 +166,27 @@ pub fn repair_minimal(mesh: &IndexedMesh, opts: &MinimalOptions) -> Result<Repai
     if counts.vertices_added_by_split > 0 {
         table = EdgeTable::build(&tris[..]);
     }
-    let boundary = orient::orient_consistently(&mut tris, &table);
+    let (boundary, reversed) = orient::orient_consistently(&mut tris, &table);
     drop(table);
-    let filled = holes::fill_holes(&positions, &mut tris, &boundary);
+    let filled = holes::fill_holes(&positions, &mut tris, &boundary, &split.parent);
     counts.holes_filled = filled.filled;
     counts.hole_triangles_added = filled.triangles;
     counts.largest_hole_edges = filled.largest;
     counts.holes_left_open = filled.open;
-    counts.flat_shells_removed = nesting::orient_shells(&positions, &mut tris);
+    let shells = nesting::orient_shells(&positions, &mut tris);
+    counts.flat_shells_removed = shells.removed;
     if tris.is_empty() {
         return Err(RepairError::NoVolume);
     }
-    counts.faces_flipped = count_flipped(&original, &tris);
+    // Input faces whose winding ends reversed (by the orientation pass xor their shell's turn).
+    counts.faces_flipped = shells
+        .from
+        .iter()
+        .filter(|&&(f, turned)| {
+            let f = f as usize;
+            src.get(f).is_some_and(|&s| s != u32::MAX) && (reversed.get(f) == Some(&true)) != turned
+        })
+        .count();
     let moved = separate::separate(&mut positions, &tris, &split, &budget);
     counts.vertices_separated = moved;
     let (out, remap) = compact(&positions, &tris);
@@ -197,21 +205,6 @@ pub fn repair_minimal(mesh: &IndexedMesh, opts: &MinimalOptions) -> Result<Repai
         counts,
         vertex_map,
     })
-}
-
-/// Faces of `after` that appear in `before` with the opposite winding (by vertex set; split
-/// vertex copies are not in `before`, so their faces are not counted).
-fn count_flipped(before: &[[u32; 3]], after: &[[u32; 3]]) -> usize {
-    let mut set: HashSet<[u32; 3], KeyHash> =
-        HashSet::with_capacity_and_hasher(before.len(), KeyHash::default());
-    set.extend(before.iter().map(|&t| edges::canonical(t)));
-    after
-        .iter()
-        .filter(|&&t| {
-            let r = [t[0], t[2], t[1]];
-            !set.contains(&edges::canonical(t)) && set.contains(&edges::canonical(r))
-        })
-        .count()
 }
 
 /// The mesh of the used vertices only, in index order; returns the old-to-new map (`u32::MAX`

@@ -17,9 +17,16 @@ struct Shell {
     hi: DVec3,
 }
 
-/// Orients each shell outward (cavities inward) and removes flat shells; returns how many shells
-/// were removed.
-pub(super) fn orient_shells(positions: &[DVec3], tris: &mut Vec<[u32; 3]>) -> usize {
+/// What [`orient_shells`] did.
+pub(super) struct Oriented {
+    /// Shells removed (flat).
+    pub removed: usize,
+    /// For each face of the result, the face it was before and whether it was reversed.
+    pub from: Vec<(u32, bool)>,
+}
+
+/// Orients each shell outward (cavities inward) and removes flat shells.
+pub(super) fn orient_shells(positions: &[DVec3], tris: &mut Vec<[u32; 3]>) -> Oriented {
     let mut uf = UnionFind((0..positions.len() as u32).collect());
     for t in tris.iter() {
         uf.union(t[0], t[1]);
@@ -73,14 +80,16 @@ pub(super) fn orient_shells(positions: &[DVec3], tris: &mut Vec<[u32; 3]>) -> us
         flip[i] = (s.volume > 0.0) != want_positive;
     }
     let mut out = Vec::with_capacity(tris.len());
+    let mut from = Vec::with_capacity(tris.len());
     for (s, &fl) in shells.iter().zip(&flip) {
         for &f in &s.faces {
             let t = tris[f];
             out.push(if fl { [t[0], t[2], t[1]] } else { t });
+            from.push((f as u32, fl));
         }
     }
     *tris = out;
-    removed
+    Oriented { removed, from }
 }
 
 /// The generalised winding number of `faces` at `p` (solid angles, Van Oosterom–Strackee).

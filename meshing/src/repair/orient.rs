@@ -7,8 +7,11 @@ use std::collections::VecDeque;
 
 /// Re-winds faces so that every two-face edge is traversed once each way where possible;
 /// `table` is the edge table of `tris`. Returns the edges used by one face only, as each face
-/// traverses them after the re-winding.
-pub(super) fn orient_consistently(tris: &mut [[u32; 3]], table: &EdgeTable) -> Vec<(u32, u32)> {
+/// traverses them after the re-winding, and which faces were reversed.
+pub(super) fn orient_consistently(
+    tris: &mut [[u32; 3]],
+    table: &EdgeTable,
+) -> (Vec<(u32, u32)>, Vec<bool>) {
     let loops: &[[u32; 3]] = tris;
     // The corner across each two-face edge (`u32::MAX`: none).
     let mut mate = vec![u32::MAX; loops.corner_count()];
@@ -63,5 +66,5 @@ pub(super) fn orient_consistently(tris: &mut [[u32; 3]], table: &EdgeTable) -> V
             t.swap(1, 2);
         }
     }
-    open
+    (open, flip)
 }

@@ -17,10 +17,23 @@ pub(super) fn separate(
     if split.parent.len() == split.first_copy {
         return 0;
     }
+    // Only vertices whose parent still has two or more copies in use (hole filling merges the
+    // copies of a vertex whose fans it closed into one).
+    let mut used = vec![false; positions.len()];
+    for t in tris {
+        for &v in t {
+            used[v as usize] = true;
+        }
+    }
+    let mut members = vec![0u32; positions.len()];
+    for (v, &p) in split.parent.iter().enumerate() {
+        if used[v] {
+            members[p as usize] += 1;
+        }
+    }
     let mut in_group = vec![false; positions.len()];
-    for c in split.first_copy..split.parent.len() {
-        in_group[c] = true;
-        in_group[split.parent[c] as usize] = true;
+    for (v, &p) in split.parent.iter().enumerate() {
+        in_group[v] = used[v] && members[p as usize] > 1;
     }
     let mut normal = vec![DVec3::ZERO; positions.len()];
     for t in tris {

@@ -30,18 +30,21 @@ pub fn run(a: &RepairArgs) -> Result<u8> {
     }
     // The input's self-intersections are not tested (as costly as the rest of the repair on a
     // large mesh, and minimal repair keeps them: the result's report has them).
-    let before = TopologyReport::with_options(
-        &input,
-        &ReportOptions {
-            self_intersections: false,
-        },
-    );
+    let skip = ReportOptions {
+        self_intersections: false,
+    };
+    let before = TopologyReport::with_options(&input, &skip);
+    let after_options = if a.no_self_intersections {
+        skip
+    } else {
+        ReportOptions::default()
+    };
     let diagonal = bbox_diagonal(&input);
     let weld = a.weld.unwrap_or(DEFAULT_WELD * diagonal);
     // A mesh without any enclosing shell is bad input in every mode.
     let minimal =
         repair_minimal(&input, &MinimalOptions { weld }).map_err(|e| anyhow!("{name}: {e}"))?;
-    let minimal_report = TopologyReport::of(&minimal.mesh);
+    let minimal_report = TopologyReport::with_options(&minimal.mesh, &after_options);
     let need_rebuild = match a.mode {
         RepairMode::Minimal => false,
         RepairMode::Rebuild => true,
@@ -61,7 +64,7 @@ pub fn run(a: &RepairArgs) -> Result<u8> {
         None
     };
     let (result, after) = match &rebuilt {
-        Some(r) => (&r.mesh, TopologyReport::of(&r.mesh)),
+        Some(r) => (&r.mesh, TopologyReport::with_options(&r.mesh, &after_options)),
         None => (&minimal.mesh, minimal_report),
     };
     let counts = minimal.counts;
