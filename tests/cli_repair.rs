@@ -510,3 +510,54 @@ fn repair_text_has_a_verdict_before_and_after() {
         "verdict: closed oriented 2-manifold, no self-intersections"
     );
 }
+
+/// Hostile inputs end with a result or a clear message, never a panic: 10⁶ copies of one face
+/// on a cube (the copies removed), a 20 000-edge hole (filled), and meshes whose faces are all
+/// degenerate (collinear, or with repeated corners: exit 2, the file named).
+#[test]
+fn hostile_inputs_end_with_a_result_or_a_message() {
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("out.off");
+    let mut cube_text = String::from("OFF\n8 1000012 0\n");
+    let c = cube(DVec3::ZERO, 1.0);
+    for p in &c.positions {
+        cube_text.push_str(&format!("{} {} {}\n", p.x, p.y, p.z));
+    }
+    for t in &c.triangles {
+        cube_text.push_str(&format!("3 {} {} {}\n", t[0], t[1], t[2]));
+    }
+    let t = c.triangles[0];
+    cube_text.push_str(&format!("3 {} {} {}\n", t[0], t[1], t[2]).repeat(1_000_000));
+    let copies = dir.path().join("copies.off");
+    std::fs::write(&copies, cube_text).unwrap();
+    let (code, v, m) = repair(&copies, &out, &["--mode", "minimal"]);
+    assert_eq!(code, 0, "{v}");
+    assert_eq!(v["changes"]["duplicate_faces_removed"], 1_000_000);
+    assert_valid("copies", &m, Some(1.0));
+
+    let mut tube = prism(20_000);
+    tube.triangles.retain(|t| !t.iter().all(|&v| v >= 20_000));
+    let hole = write(dir.path(), "hole", &tube);
+    let (code, v, m) = repair(&hole, &out, &["--mode", "minimal"]);
+    assert_eq!(code, 0, "{v}");
+    assert_eq!(v["changes"]["largest_hole_edges"], 20_000);
+    assert_valid("hole", &m, Some(ngon_area(20_000)));
+
+    let n = 10_000;
+    let mut flat = IndexedMesh::default();
+    flat.positions = (0..n).map(|i| DVec3::new(f64::from(i), 0.0, 0.0)).collect();
+    flat.triangles = (0..n).map(|i| [i, (i + 1) % n, (i + 2) % n]).collect();
+    let mut repeated = flat.clone();
+    repeated.triangles = (0..n).map(|i| [i, i, (i + 1) % n]).collect();
+    for (name, mesh, words) in [
+        ("collinear", flat, "nothing encloses a volume"),
+        ("repeated", repeated, "no usable triangle"),
+    ] {
+        let input = write(dir.path(), name, &mesh);
+        let o = solidkit(&["repair", path_str(&input), "-o", path_str(&out)]);
+        let err = String::from_utf8_lossy(&o.stderr);
+        assert_eq!(o.status.code(), Some(2), "{name}: {err}");
+        assert!(err.contains(path_str(&input)) && err.contains(words), "{err}");
+        assert!(!err.contains("panicked"), "{err}");
+    }
+}
