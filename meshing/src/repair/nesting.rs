@@ -1,13 +1,19 @@
 //! Outward orientation per shell. Shells (faces connected through shared vertices) that enclose
 //! no volume are removed (fins, flat sheets closed by hole filling). Each remaining shell is
 //! wound so that its signed volume is positive, or negative when it lies inside an odd number of
-//! other shells (a cavity), tested by the generalised winding number of a vertex.
+//! other shells (a cavity), tested by the generalised winding number of a vertex (summed directly,
+//! or through the kernel's fast winding-number tree for large containers).
 
 use super::split::UnionFind;
+use crate::IndexedMesh;
 use glam::DVec3;
+use solidkit_kernel::primitive::MeshSolid;
 
 /// Above this many shells the nesting test (quadratic in shells) is skipped: all turn outward.
 pub const MAX_NESTING_SHELLS: usize = 2000;
+
+/// Triangle visits above which a containing shell's winding numbers go through a tree.
+const DIRECT_WORK: usize = 4_000_000;
 
 struct Shell {
     faces: Vec<usize>,
@@ -63,22 +69,12 @@ pub(super) fn orient_shells(positions: &[DVec3], tris: &mut Vec<[u32; 3]>) -> Or
     let flat = |s: &Shell| s.volume.abs() <= 1e-9 * s.area.powf(1.5) || s.area == 0.0;
     let removed = shells.iter().filter(|s| flat(s)).count();
     shells.retain(|s| !flat(s));
-    let nest = shells.len() <= MAX_NESTING_SHELLS;
-    let mut flip = vec![false; shells.len()];
-    for (i, s) in shells.iter().enumerate() {
-        let mut depth = 0;
-        if nest {
-            let p = positions[tris[s.faces[0]][0] as usize];
-            for (j, t) in shells.iter().enumerate() {
-                let contains_box = t.lo.cmple(s.lo).all() && t.hi.cmpge(s.hi).all();
-                if j != i && contains_box && winding(positions, tris, &t.faces, p).abs() > 0.5 {
-                    depth += 1;
-                }
-            }
-        }
-        let want_positive = depth % 2 == 0;
-        flip[i] = (s.volume > 0.0) != want_positive;
-    }
+    let depth = nesting_depths(positions, tris, &shells);
+    let flip: Vec<bool> = shells
+        .iter()
+        .zip(&depth)
+        .map(|(s, &d)| (s.volume > 0.0) != (d % 2 == 0))
+        .collect();
     let mut out = Vec::with_capacity(tris.len());
     let mut from = Vec::with_capacity(tris.len());
     for (s, &fl) in shells.iter().zip(&flip) {
@@ -90,6 +86,49 @@ pub(super) fn orient_shells(positions: &[DVec3], tris: &mut Vec<[u32; 3]>) -> Or
     }
     *tris = out;
     Oriented { removed, from }
+}
+
+/// Per shell, how many other shells contain its first vertex (all 0 above
+/// [`MAX_NESTING_SHELLS`] shells). Only shells whose bounding box contains the other's are
+/// tested; a container is queried through the kernel's fast winding-number tree when the direct
+/// sums would cost more than [`DIRECT_WORK`] triangle visits.
+fn nesting_depths(positions: &[DVec3], tris: &[[u32; 3]], shells: &[Shell]) -> Vec<u32> {
+    let mut depth = vec![0u32; shells.len()];
+    if shells.len() > MAX_NESTING_SHELLS {
+        return depth;
+    }
+    let point = |s: &Shell| positions[tris[s.faces[0]][0] as usize];
+    for (j, t) in shells.iter().enumerate() {
+        let inside: Vec<usize> = (0..shells.len())
+            .filter(|&i| {
+                let s = &shells[i];
+                i != j && t.lo.cmple(s.lo).all() && t.hi.cmpge(s.hi).all()
+            })
+            .collect();
+        if inside.is_empty() {
+            continue;
+        }
+        let tree = (t.faces.len() * inside.len() > DIRECT_WORK)
+            .then(|| {
+                let mesh = IndexedMesh::new(
+                    positions.to_vec(),
+                    t.faces.iter().map(|&f| tris[f]).collect(),
+                );
+                MeshSolid::from_mesh(&mesh).ok()
+            })
+            .flatten();
+        for i in inside {
+            let p = point(&shells[i]);
+            let w = match &tree {
+                Some(solid) => solid.winding_number(p),
+                None => winding(positions, tris, &t.faces, p),
+            };
+            if w.abs() > 0.5 {
+                depth[i] += 1;
+            }
+        }
+    }
+    depth
 }
 
 /// The generalised winding number of `faces` at `p` (solid angles, Van Oosterom–Strackee).
