@@ -557,7 +557,10 @@ fn hostile_inputs_end_with_a_result_or_a_message() {
         let o = solidkit(&["repair", path_str(&input), "-o", path_str(&out)]);
         let err = String::from_utf8_lossy(&o.stderr);
         assert_eq!(o.status.code(), Some(2), "{name}: {err}");
-        assert!(err.contains(path_str(&input)) && err.contains(words), "{err}");
+        assert!(
+            err.contains(path_str(&input)) && err.contains(words),
+            "{err}"
+        );
         assert!(!err.contains("panicked"), "{err}");
     }
 }

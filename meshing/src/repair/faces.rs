@@ -3,9 +3,9 @@
 
 use super::RepairCounts;
 use super::edges::{canonical, directed, key};
-use glam::DVec3;
 use crate::io::key_hash::KeyHash;
 use crate::topology::EdgeTable;
+use glam::DVec3;
 use rayon::prelude::*;
 use std::collections::{HashMap, HashSet};
 
@@ -86,7 +86,11 @@ pub(super) fn split_zero_area(
 }
 
 /// Keeps the faces (and their entries in `src`) for which `keep(index, face)` holds.
-fn retain(tris: &mut Vec<[u32; 3]>, src: &mut Vec<u32>, mut keep: impl FnMut(usize, [u32; 3]) -> bool) {
+fn retain(
+    tris: &mut Vec<[u32; 3]>,
+    src: &mut Vec<u32>,
+    mut keep: impl FnMut(usize, [u32; 3]) -> bool,
+) {
     let mut kept = 0;
     for f in 0..tris.len() {
         if keep(f, tris[f]) {

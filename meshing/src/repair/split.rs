@@ -56,7 +56,11 @@ pub(super) fn split_non_manifold(
                 // The corners of the two faces at each end of the edge join.
                 let ends = |c: usize| {
                     let n = loops.next(c);
-                    if loops.origin(c) == lo { [c, n] } else { [n, c] }
+                    if loops.origin(c) == lo {
+                        [c, n]
+                    } else {
+                        [n, c]
+                    }
                 };
                 let (ef, eg) = (ends(f), ends(g));
                 uf.union(ef[0] as u32, eg[0] as u32);

@@ -64,7 +64,10 @@ pub fn run(a: &RepairArgs) -> Result<u8> {
         None
     };
     let (result, after) = match &rebuilt {
-        Some(r) => (&r.mesh, TopologyReport::with_options(&r.mesh, &after_options)),
+        Some(r) => (
+            &r.mesh,
+            TopologyReport::with_options(&r.mesh, &after_options),
+        ),
         None => (&minimal.mesh, minimal_report),
     };
     let counts = minimal.counts;
