@@ -544,9 +544,10 @@ fn hostile_inputs_end_with_a_result_or_a_message() {
     assert_valid("hole", &m, Some(ngon_area(20_000)));
 
     let n = 10_000;
-    let mut flat = IndexedMesh::default();
-    flat.positions = (0..n).map(|i| DVec3::new(f64::from(i), 0.0, 0.0)).collect();
-    flat.triangles = (0..n).map(|i| [i, (i + 1) % n, (i + 2) % n]).collect();
+    let flat = IndexedMesh::new(
+        (0..n).map(|i| DVec3::new(f64::from(i), 0.0, 0.0)).collect(),
+        (0..n).map(|i| [i, (i + 1) % n, (i + 2) % n]).collect(),
+    );
     let mut repeated = flat.clone();
     repeated.triangles = (0..n).map(|i| [i, i, (i + 1) % n]).collect();
     for (name, mesh, words) in [

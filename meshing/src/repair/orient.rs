@@ -37,8 +37,7 @@ pub(super) fn orient_consistently(
         seen[start] = true;
         queue.push_back(start);
         while let Some(f) = queue.pop_front() {
-            for c in 3 * f..3 * f + 3 {
-                let m = mate[c];
+            for (c, &m) in mate.iter().enumerate().skip(3 * f).take(3) {
                 if m == u32::MAX {
                     continue;
                 }
