@@ -33,6 +33,7 @@ const KEYS: [&str; 17] = [
     "area",
     "bbox",
     "self_intersections",
+    "self_intersections_method",
 ];
 
 #[test]

@@ -60,4 +60,4 @@ pub mod topology;
 pub use halfedge::HalfEdgeMesh;
 pub use sink::MeshSink;
 pub use solidkit_kernel::IndexedMesh;
-pub use topology::{ReportOptions, TopologyReport};
+pub use topology::{ReportOptions, SelfIntersectionsMethod, TopologyReport};

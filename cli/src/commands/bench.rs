@@ -7,7 +7,9 @@
 //! Each case runs in a child process (`solidkit bench-case`, hidden) so that its peak memory
 //! (`VmHWM`) is its own; `--in-process` skips that. Times cover lowering the tree and sparse
 //! meshing over `GridSpec::covering(domain, n)` (exactly `n` cells along the longest side, no
-//! padding), not the check.
+//! padding); the report (`solidkit mesh`'s, self-intersections included) is timed on its own
+//! beside it (`report s`, and `total s` for the whole run), and says how it knew the
+//! self-intersections (`construction` or `tested`).
 
 mod case;
 mod case_table;

@@ -37,6 +37,7 @@ mod tests;
 #[cfg(test)]
 mod tests_reference;
 
+use glam::DVec3;
 use rayon::prelude::*;
 
 use crate::IndexedMesh;
@@ -76,6 +77,20 @@ impl SelfIntersections {
 pub(crate) fn is_usable(tri: &[u32; 3], vertex_count: usize) -> bool {
     let [a, b, c] = *tri;
     tri.iter().all(|&i| (i as usize) < vertex_count) && a != b && b != c && a != c
+}
+
+/// True when two mesh triangles (vertex indices `ti`, `tj`, distinct within each, and their
+/// corners) meet beyond the vertices they share, by the same exact test as
+/// [`self_intersections`]. An exactly collinear triangle counts as meeting (a certificate built
+/// on this test must not pass it). For local tests of a few triangles (one marching-cubes cell)
+/// without the search.
+pub(crate) fn pair_meets(ti: [u32; 3], pi: [DVec3; 3], tj: [u32; 3], pj: [DVec3; 3]) -> bool {
+    match (Projection::of(pi), Projection::of(pj)) {
+        (Some(a), Some(b)) => {
+            meet_beyond_shared(ti, &Tri { p: pi, proj: a }, tj, &Tri { p: pj, proj: b })
+        }
+        _ => true,
+    }
 }
 
 /// The self-intersections of `mesh`, with at most `limit` example pairs. Fails only when a vertex

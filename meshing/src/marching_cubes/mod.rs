@@ -3,8 +3,10 @@
 //!
 //! [`table`] generates the case table from a face rule that neighbouring cells agree on;
 //! [`samples`] samples a field in parallel over a [`GridSpec`]; [`polygonize`] turns samples into triangles with vertices
-//! shared by construction. [`mesh_field`] runs the whole path.
+//! shared by construction. [`mesh_field`] runs the whole path. [`disjoint`] says why the triangles never
+//! intersect and what a run checks to claim it.
 
+pub mod disjoint;
 pub mod polygonize;
 pub mod samples;
 pub mod sign;
@@ -31,5 +33,7 @@ pub fn mesh_samples(samples: &SampleGrid) -> IndexedMesh {
     mesh
 }
 
+#[cfg(test)]
+mod disjoint_tests;
 #[cfg(test)]
 pub(crate) mod tests;

@@ -62,14 +62,15 @@ fn owner(g: usize, brick: usize, bricks_along: usize) -> (usize, usize) {
 
 /// Emits the vertices and triangles of the bricks (sorted by z, y, x brick coordinates) into
 /// `sink` in the dense path's order. Triangle lists are consumed as they are resolved and vertex
-/// lists are freed before triangles are emitted, to keep the peak memory low.
+/// lists are freed before triangles are emitted, to keep the peak memory low. Returns the number
+/// of orphan edges (see the module docs; 0 for every field whose intervals bound its samples).
 pub(crate) fn assemble(
     bricks: Vec<BrickEdges>,
     triangles: Vec<BrickTriangles>,
     spec: &GridSpec,
     brick: usize,
     sink: &mut impl MeshSink,
-) {
+) -> usize {
     let cells = spec.cells;
     let dims = cells.map(|c| c.div_ceil(brick).max(1));
     let index = BrickIndex::new(&bricks, dims);
@@ -208,6 +209,7 @@ pub(crate) fn assemble(
             }));
         }
     }
+    orphan_keys.len()
 }
 
 /// Marks a triangle corner whose edge no brick lists (vertex numbers stay far below 2³¹).

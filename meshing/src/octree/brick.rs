@@ -11,6 +11,7 @@ use super::control::{ClockFn, now};
 use super::subdivide::Node;
 use super::thin::ThinCounts;
 use crate::grid::GridSpec;
+use crate::marching_cubes::disjoint;
 use crate::marching_cubes::polygonize::loop_centre;
 use crate::marching_cubes::sign::{LONE_ZERO, resolve_lone};
 use crate::marching_cubes::table::{CENTRE, NO_CENTRE, case_table, edge_origin};
@@ -51,6 +52,9 @@ pub(crate) struct BrickOutput {
     pub evaluation_s: f64,
     /// Thin and hidden features in the brick.
     pub thin: ThinCounts,
+    /// Every vertex it owns lies strictly inside its rounded grid edge and every cell with a
+    /// centre vertex passed the local test ([`crate::marching_cubes::disjoint`]).
+    pub certified: bool,
 }
 
 /// The crossing edges a brick owns, row by row.
@@ -255,6 +259,7 @@ pub(crate) fn process<E: Evaluator>(
     let point = |i: usize, j: usize, k: usize| {
         spec.point(node.min[0] + i, node.min[1] + j, node.min[2] + k)
     };
+    let mut certified = true;
     out.edge_rows.reserve(owned[2] * owned[1] + 1);
     out.edge_rows.push(0);
     for k in 0..owned[2] {
@@ -279,6 +284,9 @@ pub(crate) fn process<E: Evaluator>(
                         s.samples.values[idx + step],
                     )
                     .expect("sign change");
+                    let (lo, hi) = (point(i, j, k)[axis], q[axis]);
+                    let top = point(i + o[0], j + o[1], k + o[2])[axis];
+                    certified &= disjoint::strictly_inside(lo, hi, top);
                     out.edges.push(((i << 2 | axis) as u16, q.as_vec3()));
                 }
             }
@@ -290,6 +298,21 @@ pub(crate) fn process<E: Evaluator>(
     let mut out = BrickTriangles::default();
     let table = case_table();
     let corner = [0, 1, nx, nx + 1, nxy, nxy + 1, nxy + nx, nxy + nx + 1];
+    // The crossing on edge `edge` of cell `(i, j, k)`, as the owner of that edge computes it.
+    let crossing = |i: usize, j: usize, k: usize, edge: u8| {
+        let (axis, o) = edge_origin(edge);
+        let p = [i + o[0], j + o[1], k + o[2]];
+        let mut q = p;
+        q[axis] += 1;
+        let at = |p: [usize; 3]| p[0] + nx * p[1] + nxy * p[2];
+        edge_vertex(
+            point(p[0], p[1], p[2]),
+            s.samples.values[at(p)],
+            point(q[0], q[1], q[2]),
+            s.samples.values[at(q)],
+        )
+        .expect("a cell's triangles use crossing edges only")
+    };
     out.triangle_rows.reserve(e[2] * e[1] + 1);
     out.triangle_rows.push(0);
     out.centre_rows.push(0);
@@ -307,25 +330,20 @@ pub(crate) fn process<E: Evaluator>(
                 let config =
                     table.cell_config(mask, |c| s.samples.values[base + corner[c as usize]]);
                 let centre = table.centre_loop[config];
+                let mut centre_at = glam::DVec3::ZERO;
                 if centre != NO_CENTRE {
                     let l = &table.loops(config)[centre as usize];
-                    let c = loop_centre(l.iter().map(|&edge| {
-                        let (axis, o) = edge_origin(edge);
-                        let p = [i + o[0], j + o[1], k + o[2]];
-                        let mut q = p;
-                        q[axis] += 1;
-                        let at = |p: [usize; 3]| p[0] + nx * p[1] + nxy * p[2];
-                        edge_vertex(
-                            point(p[0], p[1], p[2]),
-                            s.samples.values[at(p)],
-                            point(q[0], q[1], q[2]),
-                            s.samples.values[at(q)],
-                        )
-                        .expect("a loop edge crosses")
-                    }));
+                    let c = loop_centre(l.iter().map(|&edge| crossing(i, j, k, edge)));
                     out.centres.push(c.as_vec3());
+                    centre_at = c;
                 }
-                for tri in table.triangles(config) {
+                let tris = table.triangles(config);
+                if tris.len() > disjoint::PROVEN_TRIANGLES {
+                    // Beyond what the table test proves for any crossings: test the cell.
+                    certified &=
+                        disjoint::cell_disjoint(tris, centre_at, |edge| crossing(i, j, k, edge));
+                }
+                for tri in tris {
                     out.triangles.push(tri.map(|edge| {
                         if edge == CENTRE {
                             return CENTRE_IDS + (out.centres.len() - 1) as u16;
@@ -350,6 +368,7 @@ pub(crate) fn process<E: Evaluator>(
         samples: s.samples.values.len() as u64,
         evaluation_s: s.evaluation_s,
         thin: s.samples.thin,
+        certified,
     }
 }
 

@@ -143,6 +143,11 @@ pub struct MeshStats {
     /// The surface bricks were more than [`SparseOptions::max_surface_bricks`]: nothing was
     /// meshed (the mesh is empty; `surface_bricks` says how many there were).
     pub over_budget: bool,
+    /// The mesh is free of self-intersections by construction ([`crate::marching_cubes::disjoint`]):
+    /// every vertex strictly inside its rounded grid edge, every cell with a centre vertex tested
+    /// locally and passed, no orphan edge. `false` for meshers that do not certify (dual
+    /// contouring) and for the empty run of an over-budget grid.
+    pub intersection_free: bool,
 }
 
 /// The reading of `clock`, or 0 without one.

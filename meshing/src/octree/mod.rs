@@ -96,12 +96,15 @@ pub fn mesh_sparse_into<E: Evaluator>(
     for o in &outputs {
         stats.thin.add(&o.thin);
     }
+    let outputs_certified = outputs.iter().all(|o| o.certified);
     let t2 = opts.now();
     stats.bricks_s = t2 - t1;
     outputs.sort_unstable_by_key(|o| (o.edges.coord[2], o.edges.coord[1], o.edges.coord[0]));
     let (edges, triangles): (Vec<_>, Vec<_>) =
         outputs.into_iter().map(|o| (o.edges, o.triangles)).unzip();
-    assemble::assemble(edges, triangles, &spec, opts.brick_size(), sink);
+    let certified = outputs_certified && crate::marching_cubes::disjoint::planes_distinct(&spec);
+    let orphans = assemble::assemble(edges, triangles, &spec, opts.brick_size(), sink);
+    stats.intersection_free = certified && orphans == 0;
     stats.assemble_s = opts.now() - t2;
     Ok(stats)
 }

@@ -108,8 +108,32 @@ pub struct TopologyReport {
     /// [`crate::intersect`]); `None` when skipped ([`ReportOptions`]) or when a used vertex is
     /// not finite.
     pub self_intersections: Option<usize>,
+    /// How [`Self::self_intersections`] was found: tested pair by pair, or known from the
+    /// mesher's construction (see [`TopologyReport::with_certificate`]); `None` when skipped.
+    pub self_intersections_method: Option<SelfIntersectionsMethod>,
     /// The first few offending items of each kind.
     pub examples: Offenders,
+}
+
+/// How a report knows its self-intersection count.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, serde::Serialize)]
+#[serde(rename_all = "lowercase")]
+pub enum SelfIntersectionsMethod {
+    /// Every pair of triangles that may meet was tested ([`crate::intersect`]).
+    Tested,
+    /// The mesher guarantees none by construction and checked the conditions of its guarantee
+    /// for this mesh ([`crate::marching_cubes::disjoint`]); the count is 0.
+    Construction,
+}
+
+impl SelfIntersectionsMethod {
+    /// The name as the JSON report writes it.
+    pub fn name(self) -> &'static str {
+        match self {
+            Self::Tested => "tested",
+            Self::Construction => "construction",
+        }
+    }
 }
 
 /// The first [`MAX_EXAMPLES`] offending items of each kind, in ascending order.
@@ -163,17 +187,32 @@ impl TopologyReport {
 
     /// The report of `mesh` with the optional parts chosen by `options`.
     pub fn with_options(mesh: &IndexedMesh, options: &ReportOptions) -> Self {
+        Self::with_certificate(mesh, options, false)
+    }
+
+    /// [`Self::with_options`] for a mesh whose maker certifies it free of self-intersections
+    /// (`intersection_free`, e.g. [`crate::octree::MeshStats::intersection_free`]): the count
+    /// is then 0 by construction instead of tested, and the report says which
+    /// ([`Self::self_intersections_method`]). `solidkit check` never passes a certificate.
+    pub fn with_certificate(
+        mesh: &IndexedMesh,
+        options: &ReportOptions,
+        intersection_free: bool,
+    ) -> Self {
+        let test = options.self_intersections && !intersection_free;
         let intersections = || {
-            options
-                .self_intersections
-                .then(|| self_intersections(mesh, MAX_EXAMPLES).ok())
+            test.then(|| self_intersections(mesh, MAX_EXAMPLES).ok())
                 .flatten()
         };
         let (mut report, intersections) =
             rayon::join(|| Self::without_options(mesh), intersections);
         if let Some(found) = intersections {
             report.self_intersections = Some(found.count);
+            report.self_intersections_method = Some(SelfIntersectionsMethod::Tested);
             report.examples.self_intersections = found.examples;
+        } else if options.self_intersections && intersection_free {
+            report.self_intersections = Some(0);
+            report.self_intersections_method = Some(SelfIntersectionsMethod::Construction);
         }
         report
     }
@@ -183,17 +222,22 @@ impl TopologyReport {
         let vertex_count = mesh.positions.len();
         let triangles = usable_triangles(mesh);
         let tris: &[[u32; 3]] = &triangles;
-        let table = EdgeTable::build(tris);
-        let shells = Shells::of(tris, vertex_count);
+        // The edge table (parallel) beside the shells' union-find (serial), then the vertex fans
+        // beside the measures: on two threads each pair overlaps.
+        let (table, shells) =
+            rayon::join(|| EdgeTable::build(tris), || Shells::of(tris, vertex_count));
+        let (fans, measures) = rayon::join(
+            || fan_counts(tris, &table, vertex_count),
+            || Measures::of(mesh, |v| shells.is_referenced(v)),
+        );
         let mut tally = ShellTally::new(&shells);
         let mut examples = Offenders::default();
         let defects = classify_edges(tris, &table, &shells, &mut tally, &mut examples);
-        let fans = fan_counts(tris, &table, vertex_count);
         let non_manifold_vertices = classify_vertices(&fans, &shells, &mut tally, &mut examples);
-        let measures = Measures::of(mesh, |v| shells.is_referenced(v));
         examples.degenerate_faces = measures.degenerate_examples;
 
         let vertices = (0..vertex_count)
+            .into_par_iter()
             .filter(|&v| shells.is_referenced(v))
             .count();
         let (edges, faces) = (table.edge_count(), tris.len());
@@ -220,6 +264,7 @@ impl TopologyReport {
             area: measures.area,
             bbox: measures.bbox,
             self_intersections: None,
+            self_intersections_method: None,
             examples,
         }
     }

@@ -53,8 +53,11 @@ impl TopologyReport {
             ("degenerate faces", self.degenerate_faces.to_string()),
             (
                 "self-intersections",
-                self.self_intersections
-                    .map_or_else(|| "- (not checked)".to_string(), |n| n.to_string()),
+                match (self.self_intersections, self.self_intersections_method) {
+                    (None, _) => "- (not checked)".to_string(),
+                    (Some(n), Some(m)) => format!("{n} ({})", m.name()),
+                    (Some(n), None) => n.to_string(),
+                },
             ),
             (
                 "unreferenced vertices",

@@ -1,5 +1,6 @@
-//! One benchmark case: a model meshed at one resolution `repeat` times (lowering included), the
-//! peak memory read, then the last mesh checked against what is known of the model.
+//! One benchmark case: a model meshed at one resolution `repeat` times (lowering included), each
+//! mesh followed by its full report (self-intersections included, as `solidkit mesh` gives it),
+//! the peak memory read, then the last mesh checked against what is known of the model.
 
 pub use super::check::Check;
 use super::memory::peak_rss_bytes;
@@ -9,7 +10,7 @@ use anyhow::{Result, anyhow};
 use serde::{Deserialize, Serialize};
 use serde_json::{Value, json};
 use solidkit_kernel::models::Model;
-use solidkit_meshing::TopologyReport;
+use solidkit_meshing::ReportOptions;
 use solidkit_meshing::pipeline::{Domain, MeshOptions, mesh_solid};
 use std::time::Instant;
 
@@ -26,6 +27,12 @@ pub struct CaseResult {
     pub method: Method,
     /// Time of each run (lowering and meshing), seconds.
     pub times_s: Vec<f64>,
+    /// Time of each run's full report (`solidkit mesh`'s), seconds.
+    #[serde(default)]
+    pub report_times_s: Vec<f64>,
+    /// How the report knew the self-intersections: `construction` or `tested`.
+    #[serde(default)]
+    pub self_intersections_method: Option<String>,
     /// Triangles of the mesh.
     pub triangles: usize,
     /// Vertices of the mesh.
@@ -64,6 +71,22 @@ impl CaseResult {
         self.sorted().last().copied().unwrap_or(f64::NAN)
     }
 
+    /// Median report time in seconds.
+    pub fn report_median_s(&self) -> f64 {
+        let mut t = self.report_times_s.clone();
+        t.sort_by(f64::total_cmp);
+        median(&t)
+    }
+
+    /// Median whole-run time (meshing and report) in seconds.
+    pub fn total_median_s(&self) -> f64 {
+        let mut t: Vec<f64> = (self.times_s.iter().zip(&self.report_times_s))
+            .map(|(m, r)| m + r)
+            .collect();
+        t.sort_by(f64::total_cmp);
+        median(&t)
+    }
+
     /// Samples evaluated per second (at the median time).
     pub fn points_per_s(&self) -> f64 {
         self.samples_evaluated as f64 / self.median_s()
@@ -77,6 +100,8 @@ impl CaseResult {
             map.insert("min_s".into(), json!(self.min_s()));
             map.insert("max_s".into(), json!(self.max_s()));
             map.insert("points_per_s".into(), json!(self.points_per_s()));
+            map.insert("report_median_s".into(), json!(self.report_median_s()));
+            map.insert("total_median_s".into(), json!(self.total_median_s()));
             map.insert("volume_error".into(), json!(self.check.volume_error()));
             map.insert("check_passed".into(), json!(self.check.passed()));
         }
@@ -99,6 +124,7 @@ pub fn run(
         .domain(Domain::Covering(model.domain))
         .no_refinement();
     let mut times_s = Vec::new();
+    let mut report_times_s = Vec::new();
     let mut last = None;
     for _ in 0..repeat.max(1) {
         // Free the previous mesh first so the peak is that of one run.
@@ -107,21 +133,25 @@ pub fn run(
         let meshed = mesh_solid(&model.solid, &options)
             .map_err(|e| anyhow!("{} at {resolution}: {e}", model.name))?;
         times_s.push(start.elapsed().as_secs_f64());
-        last = Some((meshed.mesh, meshed.stats, meshed.program_length));
+        let start = Instant::now();
+        let report = meshed.report(&ReportOptions::default());
+        report_times_s.push(start.elapsed().as_secs_f64());
+        last = Some((meshed.mesh, meshed.stats, meshed.program_length, report));
     }
     let peak_memory_bytes = if measure_memory {
         peak_rss_bytes()
     } else {
         None
     };
-    let (mesh, stats, program_length) = last.expect("at least one run");
-    let r = TopologyReport::of(&mesh);
+    let (mesh, stats, program_length, r) = last.expect("at least one run");
     Ok(CaseResult {
         model: model.name.clone(),
         resolution,
         threads: rayon::current_num_threads(),
         method,
         times_s,
+        report_times_s,
+        self_intersections_method: r.self_intersections_method.map(|m| m.name().to_string()),
         triangles: mesh.triangle_count(),
         vertices: mesh.vertex_count(),
         samples_evaluated: stats.samples_evaluated,

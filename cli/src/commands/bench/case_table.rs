@@ -4,7 +4,7 @@ use super::case::CaseResult;
 use super::table::{Table, si};
 
 /// Column titles of the case table.
-pub const COLUMNS: [&str; 15] = [
+pub const COLUMNS: [&str; 18] = [
     "model",
     "method",
     "res",
@@ -12,6 +12,9 @@ pub const COLUMNS: [&str; 15] = [
     "median s",
     "min s",
     "max s",
+    "report s",
+    "total s",
+    "self-int.",
     "triangles",
     "points/s",
     "peak MiB",
@@ -44,6 +47,11 @@ pub fn table(results: &[CaseResult]) -> Table {
             format!("{:.3}", r.median_s()),
             format!("{:.3}", r.min_s()),
             format!("{:.3}", r.max_s()),
+            format!("{:.3}", r.report_median_s()),
+            format!("{:.3}", r.total_median_s()),
+            r.self_intersections_method
+                .clone()
+                .unwrap_or_else(|| "-".into()),
             r.triangles.to_string(),
             si(r.points_per_s()),
             r.peak_memory_bytes

@@ -10,6 +10,9 @@ fn a_tiny_case_fills_one_row_of_every_column() {
     let model = Model::by_name("sphere").expect("model");
     let r = run(&model, 16, 2, Method::Mc, false).expect("runs");
     assert_eq!(r.times_s.len(), 2);
+    assert_eq!(r.report_times_s.len(), 2);
+    assert!(r.total_median_s() > r.median_s() && r.report_median_s() > 0.0);
+    assert_eq!(r.self_intersections_method.as_deref(), Some("construction"));
     assert!(r.triangles > 0 && r.samples_evaluated > 0);
     assert!(r.check.passed(), "{:?}", r.check);
     assert!(r.check.volume_error().is_some());
@@ -27,6 +30,8 @@ fn a_tiny_case_fills_one_row_of_every_column() {
     let v = r.to_json();
     for key in [
         "median_s",
+        "report_median_s",
+        "total_median_s",
         "points_per_s",
         "check_passed",
         "triangles",
@@ -45,6 +50,7 @@ fn dual_contouring_cases_run_and_pass_their_check() {
     assert!(r.check.volume_error().is_some_and(|e| e.abs() < 0.02));
     let line = serde_json::to_string(&r).expect("json");
     assert!(line.contains("\"method\":\"dc\""), "{line}");
+    assert_eq!(r.self_intersections_method.as_deref(), Some("tested"));
 }
 
 #[test]
