@@ -15,7 +15,7 @@ fn stdout_json(o: &Output) -> Value {
         .unwrap_or_else(|e| panic!("{e}: {}", String::from_utf8_lossy(&o.stdout)))
 }
 
-const KEYS: [&str; 17] = [
+const KEYS: [&str; 18] = [
     "vertices",
     "edges",
     "faces",
@@ -69,9 +69,12 @@ fn mesh_writes_the_file_and_reports_stable_keys() {
     let c = solidkit(&["check", path_str(&out), "--json"]);
     assert_eq!(c.status.code(), Some(0));
     let rc = stdout_json(&c);
-    for k in ["vertices", "edges", "faces", "genus", "shells"] {
+    for k in ["vertices", "edges", "faces", "genus", "shells", "self_intersections"] {
         assert_eq!(rc[k], r[k], "{k}");
     }
+    // mesh knows marching cubes' self-intersections by construction; check always tests.
+    assert_eq!(r["self_intersections_method"], "construction");
+    assert_eq!(rc["self_intersections_method"], "tested");
 }
 
 #[test]

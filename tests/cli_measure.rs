@@ -168,6 +168,13 @@ fn mesh_counts_self_intersections_unless_skipped() {
         assert_eq!(o.status.code(), Some(0));
         serde_json::from_slice::<Value>(&o.stdout).unwrap()
     };
-    assert_eq!(run(&[])["self_intersections"], 0);
-    assert!(run(&["--no-self-intersections"])["self_intersections"].is_null());
+    let full = run(&[]);
+    assert_eq!(full["self_intersections"], 0);
+    assert_eq!(full["self_intersections_method"], "construction");
+    let dc = run(&["--method", "dc"]);
+    assert_eq!(dc["self_intersections"], 0);
+    assert_eq!(dc["self_intersections_method"], "tested");
+    let skipped = run(&["--no-self-intersections"]);
+    assert!(skipped["self_intersections"].is_null());
+    assert!(skipped["self_intersections_method"].is_null());
 }

@@ -37,7 +37,7 @@
 //!    trilinear field gives. So every cell with more triangles is tested where it is made, with
 //!    the same exact test on its final coordinates ([`cell_disjoint`]); they are few on smooth
 //!    surfaces.
-
+//!
 //! What the run checks to claim it ([`crate::octree::MeshStats::intersection_free`]): the
 //! rounded sample planes are distinct along each axis ([`planes_distinct`]; else a box would be
 //! flat), every vertex is strictly inside its rounded edge ([`strictly_inside`]; a vertex kept
