@@ -1,7 +1,7 @@
 //! Tests of the topology report on closed solids, tori, several shells and every defect kind.
 
 use super::test_meshes::*;
-use super::{Offenders, ReportOptions, TopologyReport};
+use super::{Offenders, ReportOptions, SelfIntersectionsMethod, TopologyReport};
 use crate::IndexedMesh;
 
 /// Asserts the report of a single closed genus-0 solid.
@@ -304,9 +304,26 @@ fn self_intersections_are_counted_unless_skipped() {
     );
     // Everything else is the same.
     let mut counted = r.clone();
+    assert_eq!(
+        counted.self_intersections_method,
+        Some(SelfIntersectionsMethod::Tested)
+    );
     counted.self_intersections = None;
+    counted.self_intersections_method = None;
     counted.examples.self_intersections.clear();
     assert_eq!(skipped, counted);
+    // A certificate replaces the test (the caller vouches for it: the count is then 0).
+    let certified = TopologyReport::with_certificate(&mesh, &ReportOptions::default(), true);
+    assert_eq!(certified.self_intersections, Some(0));
+    assert_eq!(
+        certified.self_intersections_method,
+        Some(SelfIntersectionsMethod::Construction)
+    );
+    assert!(
+        certified
+            .to_text()
+            .contains("self-intersections:     0 (construction)")
+    );
     assert!(TopologyReport::of(&cube()).is_valid_solid());
 }
 
