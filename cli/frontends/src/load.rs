@@ -76,7 +76,9 @@ pub struct LoadOptions {
     /// The sandbox limits of Rhai scripts and where their `print` and `debug` output goes
     /// (default: discarded).
     pub script: ScriptOptions,
-    /// Variable definitions `name=value` for `.scad` files (OpenSCAD's `-D`).
+    /// Variable definitions `name=value` (the CLI's `-D`): passed to OpenSCAD for `.scad` files,
+    /// constants in the scope of `.rhai` scripts (the value a Rhai literal, see
+    /// [`crate::rhai::ScriptOptions::defines`]); an error for `.json` and `.csg` inputs.
     pub defines: Vec<String>,
 }
 
@@ -181,6 +183,12 @@ pub enum LoadError {
         /// The input's name.
         name: String,
     },
+    /// `-D` definitions given for a `.json` tree or a `.csg` file, which have no variables.
+    #[error("{name}: -D NAME=VALUE applies to .scad and .rhai inputs only")]
+    Defines {
+        /// The input's name.
+        name: String,
+    },
     /// The solid was built but is not valid (a parameter out of range, ...).
     #[error("{name}: {error}")]
     Invalid {
@@ -206,7 +214,12 @@ pub fn load_path(path: &Path, options: &LoadOptions) -> Result<Loaded, LoadError
             })?;
         // Places in the exported text are named after the .scad file they come from.
         let csg_name = format!("{name} (exported .csg)");
-        let mut loaded = load_text(&exported.csg, Format::Csg, &csg_name, access, options)?;
+        // The definitions went to OpenSCAD; the exported .csg has none.
+        let csg_options = LoadOptions {
+            defines: Vec::new(),
+            ..options.clone()
+        };
+        let mut loaded = load_text(&exported.csg, Format::Csg, &csg_name, access, &csg_options)?;
         let mut warnings: Vec<String> = exported
             .warnings
             .iter()
@@ -261,14 +274,23 @@ fn load_text(
 ) -> Result<Loaded, LoadError> {
     let resolver = FileMeshResolver::with_access(access);
     let mut warnings = Vec::new();
+    if !options.defines.is_empty() && matches!(format, Format::Json | Format::Csg) {
+        return Err(LoadError::Defines {
+            name: name.to_string(),
+        });
+    }
     let solid = match format {
         Format::Scad => {
             return Err(LoadError::ScadText {
                 name: name.to_string(),
             });
         }
-        Format::Rhai => rhai::eval_with_options(text, name, Arc::new(resolver), &options.script)
-            .map_err(LoadError::Script)?,
+        Format::Rhai => {
+            let mut script = options.script.clone();
+            script.defines = options.defines.clone();
+            rhai::eval_with_options(text, name, Arc::new(resolver), &script)
+                .map_err(LoadError::Script)?
+        }
         Format::Csg => {
             let (solid, w) =
                 csg::import_with_warnings(text, options.facets, &resolver).map_err(|error| {
@@ -345,6 +367,43 @@ mod tests {
             loaded.warnings[0].starts_with("w.csg:1:"),
             "{:?}",
             loaded.warnings
+        );
+    }
+
+    #[test]
+    fn defines_set_rhai_constants_and_are_refused_elsewhere() {
+        let mut options = LoadOptions::default();
+        options.defines = vec![
+            "r=2.5".into(),
+            "size = [1, 2, 3]".into(),
+            "round=true".into(),
+        ];
+        let script = "let s = if round { sphere(r) } else { box(size) };\ns";
+        let loaded = load_str(script, Format::Rhai, "d.rhai", &options).unwrap();
+        assert_eq!(loaded.solid.bbox().max.to_array(), [2.5, 2.5, 2.5]);
+        options.defines[2] = "round=false".into();
+        let loaded = load_str(script, Format::Rhai, "d.rhai", &options).unwrap();
+        assert_eq!(loaded.solid.bbox().max.to_array(), [0.5, 1.0, 1.5]);
+        // A default in the script when -D does not give the value.
+        let with_default = "let r = if is_def_var(\"r\") { r } else { 1.0 };\nsphere(r)";
+        let loaded = load_str(with_default, Format::Rhai, "d.rhai", &options).unwrap();
+        assert_eq!(loaded.solid.bbox().max.to_array(), [2.5, 2.5, 2.5]);
+        let plain = LoadOptions::default();
+        let loaded = load_str(with_default, Format::Rhai, "d.rhai", &plain).unwrap();
+        assert_eq!(loaded.solid.bbox().max.to_array(), [1.0, 1.0, 1.0]);
+        let e = load_str("sphere(1.0)", Format::Csg, "m.csg", &options).unwrap_err();
+        assert_eq!(
+            e.to_string(),
+            "m.csg: -D NAME=VALUE applies to .scad and .rhai inputs only"
+        );
+        let e = load_str("{}", Format::Json, "t.json", &options).unwrap_err();
+        assert!(matches!(e, LoadError::Defines { .. }), "{e}");
+        options.defines = vec!["r=radius".into()];
+        let e = load_str("sphere(r)", Format::Rhai, "d.rhai", &options).unwrap_err();
+        assert!(
+            e.to_string()
+                .starts_with("d.rhai: -D r=radius: the value is not a Rhai literal"),
+            "{e}"
         );
     }
 

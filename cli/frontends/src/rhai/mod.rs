@@ -8,6 +8,7 @@
 //! standard error itself.
 
 mod api;
+mod defines;
 mod error;
 mod node;
 mod shape;
@@ -18,7 +19,7 @@ pub use error::ScriptError;
 use shape::Shape;
 
 use ::rhai::packages::{Package, StandardPackage};
-use ::rhai::{Dynamic, Engine, Scope};
+use ::rhai::{Dynamic, Engine};
 use solidkit_kernel::Solid;
 use solidkit_kernel::json::MeshResolver;
 use std::cell::Cell;
@@ -97,6 +98,9 @@ pub struct ScriptOptions {
     pub limits: Limits,
     /// Receives each line printed by `print` and `debug`; `None` discards them.
     pub print: Option<PrintSink>,
+    /// `NAME=VALUE` definitions (the CLI's `-D`): each `NAME` is a constant in the script's scope
+    /// before it runs, `VALUE` a Rhai literal (number, string, boolean, array, object map).
+    pub defines: Vec<String>,
 }
 
 impl std::fmt::Debug for ScriptOptions {
@@ -104,6 +108,7 @@ impl std::fmt::Debug for ScriptOptions {
         f.debug_struct("ScriptOptions")
             .field("limits", &self.limits)
             .field("print", &self.print.as_ref().map(|_| "Fn(&str)"))
+            .field("defines", &self.defines)
             .finish()
     }
 }
@@ -158,13 +163,14 @@ fn run(
 ) -> Result<Solid, ScriptError> {
     let limits = options.limits;
     let exported = Arc::new(Mutex::new(None::<Shape>));
+    let mut scope = defines::scope(&options.defines, file, &limits)?;
     DEADLINE.set(Some((Instant::now() + limits.max_time, limits.max_time)));
     let engine = engine(&limits, options.print.clone(), resolver, exported.clone());
     let ast = engine
         .compile(source)
         .map_err(|e| error::from_parse(source, file, &e, &limits))?;
     let value: Dynamic = engine
-        .eval_ast_with_scope(&mut Scope::new(), &ast)
+        .eval_ast_with_scope(&mut scope, &ast)
         .map_err(|e| error::from_eval(source, file, &e, &limits))?;
     let last = exported.lock().ok().and_then(|mut e| e.take());
     match last {
