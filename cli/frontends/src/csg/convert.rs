@@ -147,13 +147,7 @@ pub fn convert(
     let solid = match group(&root, top, Op2::Union, &mut ctx)? {
         Geom::Solid(s) => s,
         Geom::Empty => return Err(CsgError::Empty),
-        Geom::Flat(_) => {
-            return Err(CsgError::argument(
-                root.pos,
-                "model",
-                "the top-level geometry is 2D; extrude it to get a solid",
-            ));
-        }
+        Geom::Flat(_) => return Err(CsgError::Flat),
     };
     Ok((solid, ctx.warnings))
 }

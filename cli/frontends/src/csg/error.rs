@@ -51,6 +51,12 @@ pub enum CsgError {
     /// The model has no geometry at all.
     #[error("1:1: the model is empty (no geometry)")]
     Empty,
+    /// The model's top-level object is 2D: as OpenSCAD, which writes it only to 2D formats, no
+    /// solid.
+    #[error(
+        "1:1: the top-level object is 2D, not a 3D solid (OpenSCAD exports it only as a 2D drawing); extrude it to get a solid"
+    )]
+    Flat,
 }
 
 impl CsgError {

@@ -174,6 +174,34 @@ fn non_finite_and_undef_values_are_skipped_with_warnings() {
     ));
 }
 
+/// A model whose top-level object is 2D is no solid: OpenSCAD refuses to export it as STL ("Current
+/// top level object is not a 3D object"), and so does the importer, at every nesting.
+#[test]
+fn a_2d_model_is_not_a_solid() {
+    for text in [
+        "square(size = [1, 1]);",
+        "group() { circle(r = 1); }",
+        "difference() { square(size = [2, 2]); circle(r = 0.5); }",
+        "multmatrix([[1, 0, 0, 1], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]) polygon(points = [[0, 0], [1, 0], [0, 1]]);",
+    ] {
+        let e = import(text, Facets::Exact).unwrap_err();
+        assert_eq!(e, CsgError::Flat, "{text}");
+        assert!(
+            e.to_string()
+                .contains("the top-level object is 2D, not a 3D solid"),
+            "{e}"
+        );
+    }
+    // A 2D object beside a 3D one is skipped with a warning: the model stays a solid.
+    assert!(
+        import(
+            "group() { cube(size = [1, 1, 1]); square(size = [1, 1]); }",
+            Facets::Exact
+        )
+        .is_ok()
+    );
+}
+
 /// An empty extrusion is nothing; 3D children of an extrusion and children of the other
 /// dimension in a group are ignored with a warning, as OpenSCAD does.
 #[test]
