@@ -11,12 +11,14 @@ use solidkit_kernel::{Aabb, NodeKind, Solid};
 
 /// What a subtree's exact box is known from.
 #[derive(Debug, Clone)]
-enum Bound {
+pub(super) enum Bound {
     /// Points whose convex hull is the hull of the solid: any affine image keeps the box exact.
     Points(Vec<DVec3>),
     /// An exact box, which stays exact only under maps that keep the axes (scaled signed
     /// permutations).
     Box(Aabb),
+    /// A half-space `n · p ≤ d` (unbounded: only useful inside an intersection).
+    Plane(DVec3, f64),
     /// Not known exactly.
     Unknown,
 }
@@ -26,7 +28,7 @@ impl Bound {
         match self {
             Bound::Points(p) => Some(points_box(p)),
             Bound::Box(b) => Some(*b),
-            Bound::Unknown => None,
+            Bound::Plane(..) | Bound::Unknown => None,
         }
     }
 }
@@ -65,6 +67,7 @@ fn primitive_bound(p: &Primitive) -> Bound {
         }
         Primitive::Sphere(_) | Primitive::Cylinder(_) | Primitive::Cone(_) => Bound::Box(p.bbox()),
         Primitive::Extrude(e) if e.twist() == 0.0 => Bound::Box(p.bbox()),
+        Primitive::HalfSpace(h) => Bound::Plane(h.normal, h.offset),
         Primitive::Mesh(m) => match m.source() {
             MeshSource::Faces { vertices, faces } => Bound::Points(
                 faces
@@ -101,6 +104,9 @@ pub fn tight_bbox(solid: &Solid) -> Option<Aabb> {
                         .try_fold(Aabb::empty(), |a, b| b.map(|b| a.union(&b)))
                         .map_or(Bound::Unknown, Bound::Box)
                 }
+            }
+            NodeKind::Intersection => {
+                super::clip::convex_bound(c).map_or(Bound::Unknown, Bound::Points)
             }
             NodeKind::Transform(t) => match c.first() {
                 Some(Bound::Points(p)) => {

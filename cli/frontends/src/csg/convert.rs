@@ -300,7 +300,7 @@ fn node(
             }
             let s = if faceted {
                 let (v, f) = facets::sphere(r, stmt.resolution()?);
-                polyhedron(stmt, v, f)?
+                faceted_solid(stmt, v, f)?
             } else {
                 Solid::sphere(r)
             };
@@ -530,6 +530,15 @@ fn polyhedron(stmt: &Stmt, v: Vec<DVec3>, f: Vec<Vec<u32>>) -> Result<Solid, Csg
     Solid::polyhedron(v, f).map_err(|e| stmt.error(e.to_string()))
 }
 
+/// OpenSCAD's faceting of a round primitive: a convex polyhedron of face planes
+/// ([`super::convex`]), or a mesh solid where a face is degenerate.
+fn faceted_solid(stmt: &Stmt, v: Vec<DVec3>, f: Vec<Vec<u32>>) -> Result<Solid, CsgError> {
+    match super::convex::convex_polyhedron(&v, &f) {
+        Some(s) => Ok(s),
+        None => polyhedron(stmt, v, f),
+    }
+}
+
 /// A radius given as `r` or as diameter `d`.
 fn radius(stmt: &Stmt, r: &str, d: &str, position: usize, default: f64) -> Result<f64, CsgError> {
     if stmt.arg(d, None).is_some() {
@@ -546,7 +555,7 @@ fn cylinder(stmt: &Stmt, faceted: bool) -> Result<Geom, CsgError> {
     };
     let s = if faceted {
         let (v, f) = facets::cylinder(r1, r2, z0, z0 + h, stmt.resolution()?);
-        polyhedron(stmt, v, f)?
+        faceted_solid(stmt, v, f)?
     } else {
         let c = if r1 == r2 {
             Solid::cylinder(r1, h)

@@ -41,8 +41,10 @@
 
 mod args;
 mod bounds;
+mod clip;
 mod contour;
 mod convert;
+mod convex;
 mod dxf;
 mod error;
 mod facets;
