@@ -238,7 +238,8 @@ fn options(
 }
 
 /// Reads a solid from a `.json` tree, a `.rhai` script, an OpenSCAD `.csg` file or a `.scad`
-/// file (through the installed OpenSCAD, with `defines` as its `-D name=value`), by extension.
+/// file (through the installed OpenSCAD, with `defines` as its `-D name=value`), by extension;
+/// in `.rhai` scripts each define is a constant (the value a Rhai literal).
 /// Files it names must lie in its folder or in one of `allow`.
 #[pyfunction(signature = (path, *, facets = "exact", allow = None, defines = None))]
 fn load(

@@ -129,3 +129,16 @@ def test_formula_solids_through_node():
     assert abs(r["volume"] - 2 * math.pi ** 2 * 0.09) < 0.01 * 2 * math.pi ** 2 * 0.09
     with pytest.raises(sk.LoadError, match="unknown name 'q'"):
         sk.node("expr", formula="x + q", bounds=[[0, 0, 0], [1, 1, 1]])
+
+
+def test_rhai_scripts_take_defines_as_constants(tmp_path):
+    f = tmp_path / "m.rhai"
+    f.write_text('let n = if is_def_var("n") { n } else { 1.0 };\nbox([n, size[1], 3.0])\n')
+    assert list(sk.load(f, defines=["n=4.0", "size=[1, 2]"]).bbox[1]) == [2.0, 1.0, 1.5]
+    assert list(sk.load(f, defines=["size=[1, 6]"]).bbox[1]) == [0.5, 3.0, 1.5]
+    with pytest.raises(sk.LoadError, match="not a Rhai literal"):
+        sk.load(f, defines=["size=oops"])
+    t = tmp_path / "t.json"
+    t.write_text('{"type": "sphere", "radius": 1}')
+    with pytest.raises(sk.LoadError, match="applies to .scad and .rhai inputs only"):
+        sk.load(t, defines=["n=1"])

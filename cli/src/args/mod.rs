@@ -219,7 +219,8 @@ pub struct MeshArgs {
     /// symbolic link leading out, no absolute paths.
     #[arg(long, value_name = "DIR")]
     pub allow_path: Vec<PathBuf>,
-    /// A variable for `.scad` inputs, passed to OpenSCAD as `-D NAME=VALUE` (repeatable).
+    /// A variable for `.scad` inputs (passed to OpenSCAD as `-D NAME=VALUE`) and `.rhai` scripts
+    /// (the constant NAME, VALUE a Rhai literal); repeatable.
     #[arg(short = 'D', value_name = "NAME=VALUE")]
     pub define: Vec<String>,
     /// Also write a PNG of the mesh (iso view, 1024x1024).
@@ -330,7 +331,8 @@ pub struct ConvertArgs {
     /// symbolic link leading out, no absolute paths.
     #[arg(long, value_name = "DIR")]
     pub allow_path: Vec<PathBuf>,
-    /// A variable for `.scad` inputs, passed to OpenSCAD as `-D NAME=VALUE` (repeatable).
+    /// A variable for `.scad` inputs (passed to OpenSCAD as `-D NAME=VALUE`) and `.rhai` scripts
+    /// (the constant NAME, VALUE a Rhai literal); repeatable.
     #[arg(short = 'D', value_name = "NAME=VALUE")]
     pub define: Vec<String>,
 }

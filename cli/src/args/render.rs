@@ -46,7 +46,8 @@ pub struct RenderArgs {
     /// Let the files the input names (`mesh` and `png` paths) come from DIR too (repeatable).
     #[arg(long, value_name = "DIR")]
     pub allow_path: Vec<PathBuf>,
-    /// A variable for `.scad` inputs, passed to OpenSCAD as `-D NAME=VALUE` (repeatable).
+    /// A variable for `.scad` inputs (passed to OpenSCAD as `-D NAME=VALUE`) and `.rhai` scripts
+    /// (the constant NAME, VALUE a Rhai literal); repeatable.
     #[arg(short = 'D', value_name = "NAME=VALUE")]
     pub define: Vec<String>,
 }

@@ -187,7 +187,8 @@ def load(
     """A solid from a .json tree, .rhai script, OpenSCAD .csg file or .scad file (by extension).
 
     ``.scad`` files go through the installed OpenSCAD, with ``defines`` (``"name=value"``) as its
-    ``-D`` options.
+    ``-D`` options; in ``.rhai`` scripts each define is the constant ``name`` (``value`` a Rhai
+    literal); defines for ``.json`` and ``.csg`` files are an error.
     """
 
 def from_json(
