@@ -148,3 +148,40 @@ fn csg_warnings_reach_the_report_and_stderr() {
     let v = r["volume"].as_f64().expect("volume");
     assert!((v - 8.0).abs() < 0.05, "{v}");
 }
+
+#[test]
+fn define_sets_rhai_constants_and_is_refused_for_json() {
+    let dir = tempfile::tempdir().expect("temp dir");
+    let script = dir.path().join("plate.rhai");
+    std::fs::write(
+        &script,
+        "let w = if is_def_var(\"w\") { w } else { 2.0 };\nbox([w, 1.0, 1.0])\n",
+    )
+    .expect("write");
+    let size = |defines: &[&str]| {
+        let mut args = vec!["mesh", path_str(&script), "-r", "16", "--json"];
+        args.extend(defines.iter().flat_map(|d| ["-D", *d]));
+        let o = solidkit(&args);
+        assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+        let r: Value = serde_json::from_slice(&o.stdout).expect("JSON report");
+        let b = &r["bbox"];
+        b[1][0].as_f64().expect("bbox") - b[0][0].as_f64().expect("bbox")
+    };
+    assert!((size(&[]) - 2.0).abs() < 0.1, "{}", size(&[]));
+    assert!((size(&["w=6.0"]) - 6.0).abs() < 0.1);
+    let o = solidkit(&["mesh", path_str(&script), "-D", "w=wide"]);
+    assert_eq!(o.status.code(), Some(2));
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert!(
+        err.contains("-D w=wide: the value is not a Rhai literal"),
+        "{err}"
+    );
+    let tree = fixture("examples/ball_with_holes.json");
+    let o = solidkit(&["mesh", path_str(&tree), "-D", "w=1"]);
+    assert_eq!(o.status.code(), Some(2));
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert!(
+        err.contains("-D NAME=VALUE applies to .scad and .rhai inputs only"),
+        "{err}"
+    );
+}

@@ -372,12 +372,14 @@ mod tests {
 
     #[test]
     fn defines_set_rhai_constants_and_are_refused_elsewhere() {
-        let mut options = LoadOptions::default();
-        options.defines = vec![
-            "r=2.5".into(),
-            "size = [1, 2, 3]".into(),
-            "round=true".into(),
-        ];
+        let mut options = LoadOptions {
+            defines: vec![
+                "r=2.5".into(),
+                "size = [1, 2, 3]".into(),
+                "round=true".into(),
+            ],
+            ..LoadOptions::default()
+        };
         let script = "let s = if round { sphere(r) } else { box(size) };\ns";
         let loaded = load_str(script, Format::Rhai, "d.rhai", &options).unwrap();
         assert_eq!(loaded.solid.bbox().max.to_array(), [2.5, 2.5, 2.5]);

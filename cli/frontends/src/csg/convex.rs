@@ -16,7 +16,7 @@ pub fn convex_polyhedron(v: &[DVec3], f: &[Vec<u32>]) -> Option<Solid> {
         hi = hi.max(*p);
     }
     let size = hi - lo;
-    if !(size.min_element() > 0.0) {
+    if size.is_nan() || size.min_element() <= 0.0 {
         return None;
     }
     let mut parts = Vec::with_capacity(f.len() + 1);
