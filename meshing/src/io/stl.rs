@@ -48,7 +48,7 @@ pub(super) fn read(bytes: &[u8], name: &str) -> Result<IndexedMesh, MeshIoError>
 }
 
 /// The triangle records (50 bytes each: normal, three corners as little-endian `f32`,
-/// attribute) of a binary STL file's content, when the size rule of [`read`] makes it binary;
+/// attribute) of a binary STL file's content, when the size rule of `read` makes it binary;
 /// `None` for ASCII or malformed files.
 pub fn binary_records(bytes: &[u8]) -> Option<&[u8]> {
     let count = declared_count(bytes)?;

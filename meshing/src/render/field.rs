@@ -8,7 +8,7 @@
 //! program. The pixels not yet hit then walk the tile's segments in order: every ray is sampled
 //! every half pixel of depth with the segment's pruned program (single-precision batches, as the
 //! mesher samples), and the first sign change is placed by linear interpolation (a quarter pixel at
-//! worst, enough for shading); the normal is the program's double-precision gradient there, shaded by [`lambert`].
+//! worst, enough for shading); the normal is the program's double-precision gradient there, shaded by `lambert`.
 //!
 //! A feature thinner than half a pixel along the ray can fall between two samples; pixels are
 //! independent, so the image does not depend on the thread count.

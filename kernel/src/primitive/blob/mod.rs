@@ -12,7 +12,7 @@
 //!
 //! `f` is not a distance: `|f| / L` is a (conservative) distance bound.
 //!
-//! Many balls (from [`cull::MIN_BALLS`]): the field is the sum truncated where a term falls below
+//! Many balls (from `cull::MIN_BALLS`): the field is the sum truncated where a term falls below
 //! `T · 2⁻⁶⁰ / N` (at most `T · 2⁻⁶⁰` in all, `cull.rs`), and values, gradients and intervals visit
 //! only the balls whose reach meets the point, chunk or box, so a sample costs the balls near it
 //! rather than all of them.
