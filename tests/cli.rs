@@ -69,7 +69,14 @@ fn mesh_writes_the_file_and_reports_stable_keys() {
     let c = solidkit(&["check", path_str(&out), "--json"]);
     assert_eq!(c.status.code(), Some(0));
     let rc = stdout_json(&c);
-    for k in ["vertices", "edges", "faces", "genus", "shells", "self_intersections"] {
+    for k in [
+        "vertices",
+        "edges",
+        "faces",
+        "genus",
+        "shells",
+        "self_intersections",
+    ] {
         assert_eq!(rc[k], r[k], "{k}");
     }
     // mesh knows marching cubes' self-intersections by construction; check always tests.
