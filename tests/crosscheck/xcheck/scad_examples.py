@@ -265,6 +265,8 @@ def table(results: list, conf: dict) -> str:
         explained = conf.get(r["name"], {}).get("explained")
         if verdict == "differ" and explained:
             verdict = "differ (explained)"
+        elif verdict == "differ" and conf.get(r["name"], {}).get("known_bug"):
+            verdict = "differ (FAILURE, known solidkit bug)"
         lines.append(f"| {r['name']} | {r.get('openscad_status', '')} | {r.get('openscad_s', 0):.2f} | "
                      f"{r.get('solidkit_s', 0):.2f} | {ratio} | {topo} | {vol} | {hd} | {verdict} |")
     lines.append("")
@@ -274,6 +276,9 @@ def table(results: list, conf: dict) -> str:
             explained = conf.get(r["name"], {}).get("explained")
             if explained:
                 lines.append(f"  explained: {explained['reason']} Evidence: {explained['evidence']}")
+            bug = conf.get(r["name"], {}).get("known_bug")
+            if bug:
+                lines.append(f"  known solidkit bug (a failure): {bug['reason']}")
     return "\n".join(lines) + "\n"
 
 
