@@ -14,7 +14,7 @@
 //!   query's `y` and reaches right of it (the others cannot cross the ray), which does not depend
 //!   on the order.
 
-use super::polygon::{Best, Nearest, crosses};
+use super::nearest::{Best, Nearest, closest, crosses};
 use crate::bvh::{TriangleBvh, box_distance2};
 use glam::DVec2;
 use std::cell::RefCell;
@@ -98,16 +98,7 @@ impl EdgeIndex {
                         let (r, i) = self.locate(g);
                         let n = loops[r].len();
                         let (a, b) = (loops[r][(i + n - 1) % n], loops[r][i]);
-                        let e = b - a;
-                        let w = q - a;
-                        let l2 = e.length_squared();
-                        let lambda = if l2 > 0.0 {
-                            (w.dot(e) / l2).clamp(0.0, 1.0)
-                        } else {
-                            0.0
-                        };
-                        let c = a + e * lambda;
-                        let d2 = (q - c).length_squared();
+                        let (lambda, c, e, d2) = closest(a, b, q);
                         if (d2 < best.d2 || (d2 == best.d2 && g < best_g)) && !skip(a, b) {
                             best_g = g;
                             best = Best {

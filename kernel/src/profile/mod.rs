@@ -5,6 +5,7 @@
 mod circle;
 mod edges;
 mod error;
+mod nearest;
 mod polygon;
 mod rectangle;
 mod triangulate;

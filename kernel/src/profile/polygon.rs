@@ -8,6 +8,8 @@
 
 use super::edges::EdgeIndex;
 use super::error::ProfileError;
+pub(crate) use super::nearest::Nearest;
+use super::nearest::{Best, closest, crosses};
 use glam::DVec2;
 
 /// A polygon: an outline and holes, each a closed loop of corners (last joined to first).
@@ -23,21 +25,6 @@ impl PartialEq for Polygon {
         // The index is derived from the loops.
         self.loops == other.loops
     }
-}
-
-/// The nearest boundary point of a set of loops.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub(crate) struct Nearest {
-    /// Signed distance (negative inside by the even-odd rule).
-    pub distance: f64,
-    /// Gradient of the signed distance (unit length).
-    pub gradient: DVec2,
-    /// Loop of the nearest edge.
-    pub ring: usize,
-    /// Index of the nearest edge's first corner within its loop.
-    pub edge: usize,
-    /// Position of the nearest point along that edge (0 at its first corner, 1 at the next).
-    pub lambda: f64,
 }
 
 /// The signed distance from `q` to the loops `0..loops`, loop `r` having `len(r)` corners
@@ -67,16 +54,7 @@ pub(crate) fn loops_distance_skipping(
         let mut a = corner(r, n - 1);
         for i in 0..n {
             let b = corner(r, i);
-            let e = b - a;
-            let w = q - a;
-            let l2 = e.length_squared();
-            let lambda = if l2 > 0.0 {
-                (w.dot(e) / l2).clamp(0.0, 1.0)
-            } else {
-                0.0
-            };
-            let c = a + e * lambda;
-            let d2 = (q - c).length_squared();
+            let (lambda, c, e, d2) = closest(a, b, q);
             if d2 < best.d2 && !skip(a, b) {
                 best = Best {
                     d2,
@@ -94,59 +72,6 @@ pub(crate) fn loops_distance_skipping(
         }
     }
     best.signed(inside, q)
-}
-
-/// Whether the edge `a → b` crosses the ray from `q` towards `+x` (the even-odd rule's test).
-#[inline]
-pub(super) fn crosses(q: DVec2, a: DVec2, b: DVec2) -> bool {
-    (a.y > q.y) != (b.y > q.y) && q.x < a.x + (q.y - a.y) * (b.x - a.x) / (b.y - a.y)
-}
-
-/// The nearest edge found so far by a distance query.
-#[derive(Debug, Clone, Copy)]
-pub(super) struct Best {
-    /// Squared distance to the edge.
-    pub d2: f64,
-    /// Its loop.
-    pub ring: usize,
-    /// Its first corner within the loop.
-    pub edge: usize,
-    /// Position of the nearest point along it.
-    pub lambda: f64,
-    /// The nearest point.
-    pub c: DVec2,
-    /// The edge vector.
-    pub e: DVec2,
-}
-
-impl Best {
-    /// No edge yet.
-    pub const NONE: Best = Best {
-        d2: f64::INFINITY,
-        ring: 0,
-        edge: 0,
-        lambda: 0.0,
-        c: DVec2::ZERO,
-        e: DVec2::X,
-    };
-
-    /// The signed distance and gradient from `q`, negative when `inside`.
-    pub fn signed(self, inside: bool, q: DVec2) -> Nearest {
-        let d = self.d2.sqrt();
-        let away = if d > 0.0 {
-            (q - self.c) / d
-        } else {
-            DVec2::new(self.e.y, -self.e.x).normalize_or(DVec2::X)
-        };
-        let (distance, gradient) = if inside { (-d, -away) } else { (d, away) };
-        Nearest {
-            distance,
-            gradient,
-            ring: self.ring,
-            edge: self.edge,
-            lambda: self.lambda,
-        }
-    }
 }
 
 /// Twice the signed area of a loop (positive counter-clockwise).

@@ -5,40 +5,10 @@
 //! within noise of the surface or inside), that box is exact. Failing both, the caller meshes the
 //! solid and takes the mesh's box.
 
+use super::bound::Bound;
 use glam::{DAffine3, DVec3};
 use solidkit_kernel::primitive::{MeshSource, Primitive};
 use solidkit_kernel::{Aabb, NodeKind, Solid};
-
-/// What a subtree's exact box is known from.
-#[derive(Debug, Clone)]
-pub(super) enum Bound {
-    /// Points whose convex hull is the hull of the solid: any affine image keeps the box exact.
-    Points(Vec<DVec3>),
-    /// An exact box, which stays exact only under maps that keep the axes (scaled signed
-    /// permutations).
-    Box(Aabb),
-    /// A half-space `n · p ≤ d` (unbounded: only useful inside an intersection).
-    Plane(DVec3, f64),
-    /// Not known exactly.
-    Unknown,
-}
-
-impl Bound {
-    fn aabb(&self) -> Option<Aabb> {
-        match self {
-            Bound::Points(p) => Some(points_box(p)),
-            Bound::Box(b) => Some(*b),
-            Bound::Plane(..) | Bound::Unknown => None,
-        }
-    }
-}
-
-/// The box of `points` (empty for none).
-fn points_box(points: &[DVec3]) -> Aabb {
-    points
-        .iter()
-        .fold(Aabb::empty(), |b, p| b.union(&Aabb::new(*p, *p)))
-}
 
 /// Whether the linear part of `m` maps each axis onto an axis.
 fn keeps_axes(m: &DAffine3) -> bool {

@@ -3,7 +3,7 @@
 //! planes): the box's faces clipped by each plane in turn, the cut closing each time as a new face.
 //! Used by [`super::bounds`] so that `resize()` measures such a primitive exactly, rotated or not.
 
-use super::bounds::Bound;
+use super::bound::Bound;
 use glam::DVec3;
 
 /// The corners of the intersection of the children `c` of an intersection node, when exactly one

@@ -40,6 +40,7 @@
 //! errors naming the construct and its line.
 
 mod args;
+mod bound;
 mod bounds;
 mod clip;
 mod contour;
