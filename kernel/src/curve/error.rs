@@ -64,21 +64,80 @@ pub enum CurveError {
         /// Index of the bad weight.
         index: usize,
     },
+    /// A curve that takes an exact number of points got another number.
+    #[error("{parameter}: expected exactly {expected} points, found {found}")]
+    PointCount {
+        /// The key holding the points.
+        parameter: &'static str,
+        /// How many the curve takes.
+        expected: usize,
+        /// How many were given.
+        found: usize,
+    },
+    /// The number of tangents differs from the number of points.
+    #[error("tangents: expected {expected} tangents (one per point), found {found}")]
+    TangentCount {
+        /// The number of points.
+        expected: usize,
+        /// The number of tangents given.
+        found: usize,
+    },
+    /// A composite curve's pieces do not join as declared.
+    #[error("pieces[{index}]: {problem}")]
+    Join {
+        /// Index of the piece that starts at the bad joint.
+        index: usize,
+        /// What does not hold, with the measured values.
+        problem: String,
+    },
+    /// A coordinate formula of a formula curve does not parse.
+    #[error("{parameter}: {message}")]
+    Formula {
+        /// The key of the formula (`x`, `y` or `z`).
+        parameter: &'static str,
+        /// The parser's message (with the column).
+        message: String,
+    },
+    /// The parameter interval `[u0, u1]` is empty or not finite.
+    #[error("domain: expected finite [u0, u1] with u0 < u1")]
+    Domain,
+    /// The chord error asked for needs more polyline points than allowed.
+    #[error("chord_error: {tolerance:e} needs more than {limit} polyline points")]
+    TooManyPoints {
+        /// The chord error asked for.
+        tolerance: f64,
+        /// The largest number of points produced.
+        limit: usize,
+    },
+    /// The chord error is not a positive finite number.
+    #[error("chord_error: expected a positive number, found {0}")]
+    BadTolerance(f64),
+    /// A piece of a composite curve is itself composite.
+    #[error("pieces[{index}]: a composite curve cannot contain another composite curve")]
+    NestedComposite {
+        /// Index of the nested piece.
+        index: usize,
+    },
 }
 
 impl CurveError {
     /// The JSON key of the curve object this error is about.
     pub fn parameter(&self) -> &'static str {
         match self {
-            CurveError::TooFewPoints { parameter, .. } | CurveError::NonFinite { parameter } => {
-                parameter
-            }
+            CurveError::TooFewPoints { parameter, .. }
+            | CurveError::PointCount { parameter, .. }
+            | CurveError::NonFinite { parameter }
+            | CurveError::Formula { parameter, .. } => parameter,
+            CurveError::Domain => "domain",
+            CurveError::TooManyPoints { .. } | CurveError::BadTolerance(_) => "chord_error",
             CurveError::BadDegree { .. } => "degree",
             CurveError::KnotCount { .. }
             | CurveError::KnotsDecreasing { .. }
             | CurveError::KnotMultiplicity { .. }
             | CurveError::EmptyDomain => "knots",
             CurveError::WeightCount { .. } | CurveError::NonPositiveWeight { .. } => "weights",
+            CurveError::TangentCount { .. } => "tangents",
+            CurveError::Join { .. } | CurveError::NestedComposite { .. } => "pieces",
         }
     }
 }

@@ -1,7 +1,10 @@
 //! Parametric curves in 3D, one file per kind: Bézier curves of any degree (de Casteljau),
-//! cubic Hermite curves, B-splines (uniform, clamped, periodic or any knot vector; de Boor),
-//! NURBS (exact conics), and interpolating cubic splines; plus closest-point queries for distance
-//! fields ([`CurveIndex`]).
+//! cubic Hermite curves (one segment or a C¹ chain), B-splines (uniform, clamped, periodic or any
+//! knot vector; de Boor), NURBS (exact conics), natural C² interpolating splines, the cubic
+//! through four points at `u = 0, 1/3, 2/3, 1` ([`CubicThrough`]), composite chains with checked
+//! continuity ([`Composite`]); formula curves ([`FormulaCurve`], no control points, so only in
+//! [`Parametric`]); polylines within a chord-error bound ([`flatten`]); and closest-point queries
+//! for distance fields ([`CurveIndex`]).
 //!
 //! Every kind implements [`Curve3`] (point, derivatives, parameter domain, bounding box from the
 //! control points) and converts to rational Bézier pieces ([`BezierPiece`]), the common form used
@@ -14,17 +17,24 @@ mod blend;
 mod bspline;
 mod casteljau;
 mod closest;
+mod composite;
 mod error;
+pub mod flatten;
+mod formula;
 mod hermite;
 mod interpolating;
 mod measure;
 mod nurbs;
+mod parametric;
 mod piece;
 mod quadrature;
 mod spans;
 mod spline;
+mod through;
 mod tridiagonal;
 
+#[cfg(test)]
+mod notes_tests;
 #[cfg(test)]
 mod tests;
 
@@ -32,13 +42,18 @@ pub use bezier::Bezier;
 pub(crate) use blend::BlendIndex;
 pub use bspline::BSpline;
 pub use closest::{Closest, CurveIndex};
+pub use composite::{Composite, Continuity};
 pub use error::CurveError;
-pub use hermite::Hermite;
+pub use flatten::Polyline;
+pub use formula::FormulaCurve;
+pub use hermite::{Hermite, hermite_basis};
 pub use interpolating::Interpolating;
 pub use measure::arc_length;
 pub use nurbs::Nurbs;
+pub use parametric::{Parametric, Split};
 pub use piece::{BezierPiece, Jet};
 pub use quadrature::{gauss_legendre, integrate};
+pub use through::CubicThrough;
 
 use crate::Aabb;
 use glam::DVec3;
@@ -74,8 +89,12 @@ pub enum Curve {
     BSpline(BSpline),
     /// A NURBS curve.
     Nurbs(Nurbs),
-    /// An interpolating cubic spline.
+    /// A natural C² interpolating cubic spline through any number of points.
     Interpolating(Interpolating),
+    /// The cubic through four points at `u = 0, 1/3, 2/3, 1`.
+    CubicThrough(CubicThrough),
+    /// A chain of curves with checked continuity.
+    Composite(Composite),
 }
 
 macro_rules! each_curve {
@@ -86,6 +105,8 @@ macro_rules! each_curve {
             Curve::BSpline($c) => $e,
             Curve::Nurbs($c) => $e,
             Curve::Interpolating($c) => $e,
+            Curve::CubicThrough($c) => $e,
+            Curve::Composite($c) => $e,
         }
     };
 }
@@ -99,6 +120,8 @@ impl Curve {
             Curve::BSpline(_) => "bspline",
             Curve::Nurbs(_) => "nurbs",
             Curve::Interpolating(_) => "interpolating",
+            Curve::CubicThrough(_) => "cubic_through",
+            Curve::Composite(_) => "composite",
         }
     }
 

@@ -37,7 +37,7 @@ mod read;
 mod write;
 
 pub use crate::primitive::{MeshResolver, NoMeshResolver};
-pub use read::{from_str, from_str_with};
+pub use read::{curve_from_str, from_str, from_str_with};
 pub use write::to_string;
 
 /// The value of the envelope's `format` key.

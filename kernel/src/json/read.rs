@@ -13,12 +13,16 @@ use crate::{KernelError, solid};
 use glam::DVec3;
 
 mod blob;
+mod curve;
+mod curve_profile;
 mod expr;
 mod heightfield;
 mod polyhedra;
 mod quadric;
 mod subdivide;
 mod sweep;
+
+pub use curve::curve_from_str;
 
 /// A problem at a byte offset, with the message already carrying the JSON path.
 struct Located {

@@ -13,7 +13,7 @@
 
 use super::super::document::Value;
 use super::{Params, R};
-use crate::curve::{BSpline, Bezier, Curve, CurveError, Hermite, Interpolating, Nurbs};
+use crate::curve::{Curve, Parametric};
 use crate::primitive::sweep::SweepError;
 use crate::primitive::{Extrude, Loft, Primitive, Revolve, Ruled, Sweep};
 use crate::profile::{Circle, Profile, ProfileError, Rectangle};
@@ -22,10 +22,10 @@ use std::sync::Arc;
 
 /// A nested object: its arena index, its entries and its key path from the node (`profile`,
 /// `path`, …).
-struct Nested<'e> {
-    index: u32,
-    entries: &'e [(String, u32)],
-    key: String,
+pub(super) struct Nested<'e> {
+    pub(super) index: u32,
+    pub(super) entries: &'e [(String, u32)],
+    pub(super) key: String,
 }
 
 impl Params<'_, '_> {
@@ -103,7 +103,7 @@ impl Params<'_, '_> {
     }
 
     /// The object under the node's `key`.
-    fn sweep_nested(&self, key: &str) -> R<Nested<'_>> {
+    pub(super) fn sweep_nested(&self, key: &str) -> R<Nested<'_>> {
         let index = self.at(key)?;
         match &self.reader.doc.values[index as usize] {
             Value::Object(entries) => Ok(Nested {
@@ -120,7 +120,7 @@ impl Params<'_, '_> {
     }
 
     /// The `type` string of a nested object.
-    fn sweep_nested_type(&self, n: &Nested<'_>) -> R<&str> {
+    pub(super) fn sweep_nested_type(&self, n: &Nested<'_>) -> R<&str> {
         let t = self.sweep_member(n, "type")?;
         match &self.reader.doc.values[t as usize] {
             Value::String(s) => Ok(s.as_str()),
@@ -133,13 +133,13 @@ impl Params<'_, '_> {
     }
 
     /// The index of a required member of a nested object.
-    fn sweep_member(&self, n: &Nested<'_>, key: &str) -> R<u32> {
+    pub(super) fn sweep_member(&self, n: &Nested<'_>, key: &str) -> R<u32> {
         super::find(n.entries, key)
             .ok_or_else(|| self.fail(n.index, &n.key, format!("missing key \"{key}\"")))
     }
 
     /// Rejects members of a nested object outside `allowed` (besides `type` and `comment`).
-    fn sweep_nested_keys(&self, n: &Nested<'_>, allowed: &[&str]) -> R<()> {
+    pub(super) fn sweep_nested_keys(&self, n: &Nested<'_>, allowed: &[&str]) -> R<()> {
         for (k, i) in n.entries {
             if k != "type" && k != "comment" && !allowed.contains(&k.as_str()) {
                 return Err(self.fail(
@@ -156,7 +156,7 @@ impl Params<'_, '_> {
     }
 
     /// The items of an array.
-    fn sweep_items(&self, index: u32, key: &str) -> R<&[u32]> {
+    pub(super) fn sweep_items(&self, index: u32, key: &str) -> R<&[u32]> {
         match &self.reader.doc.values[index as usize] {
             Value::Array(items) => Ok(items),
             v => Err(self.fail(
@@ -168,12 +168,12 @@ impl Params<'_, '_> {
     }
 
     /// A point `[x, y]`.
-    fn sweep_point2(&self, index: u32, key: &str) -> R<DVec2> {
+    pub(super) fn sweep_point2(&self, index: u32, key: &str) -> R<DVec2> {
         Ok(DVec2::from_array(self.numbers::<2>(index, key)?))
     }
 
     /// A point `[x, y, z]`, or `[x, y]` with z = 0.
-    fn sweep_point3(&self, index: u32, key: &str) -> R<DVec3> {
+    pub(super) fn sweep_point3(&self, index: u32, key: &str) -> R<DVec3> {
         let n = self.sweep_items(index, key)?.len();
         if n == 2 {
             Ok(self.sweep_point2(index, key)?.extend(0.0))
@@ -183,7 +183,7 @@ impl Params<'_, '_> {
     }
 
     /// An array of 2D points.
-    fn sweep_points2(&self, index: u32, key: &str) -> R<Vec<DVec2>> {
+    pub(super) fn sweep_points2(&self, index: u32, key: &str) -> R<Vec<DVec2>> {
         let items = self.sweep_items(index, key)?;
         items
             .iter()
@@ -193,7 +193,7 @@ impl Params<'_, '_> {
     }
 
     /// An array of 3D points.
-    fn sweep_points3(&self, index: u32, key: &str) -> R<Vec<DVec3>> {
+    pub(super) fn sweep_points3(&self, index: u32, key: &str) -> R<Vec<DVec3>> {
         let items = self.sweep_items(index, key)?;
         items
             .iter()
@@ -203,7 +203,7 @@ impl Params<'_, '_> {
     }
 
     /// An array of numbers.
-    fn sweep_numbers(&self, index: u32, key: &str) -> R<Vec<f64>> {
+    pub(super) fn sweep_numbers(&self, index: u32, key: &str) -> R<Vec<f64>> {
         let items = self.sweep_items(index, key)?;
         items
             .iter()
@@ -259,13 +259,15 @@ impl Params<'_, '_> {
                 return Profile::polygon(points, holes)
                     .map_err(|e| self.sweep_profile_error(&n, e));
             }
+            "curve" | "radial" => return self.curve_profile(&n, ty),
             other => {
                 let t = self.sweep_member(&n, "type")?;
                 return Err(self.fail(
                     t,
                     &k("type"),
                     format!(
-                        "unknown profile type \"{other}\" (expected circle, rectangle or polygon)"
+                        "unknown profile type \"{other}\" (expected circle, rectangle, polygon, \
+                         curve or radial)"
                     ),
                 ));
             }
@@ -275,104 +277,27 @@ impl Params<'_, '_> {
             .map_err(|e| self.sweep_profile_error(&n, e))
     }
 
-    fn sweep_profile_error(&self, n: &Nested<'_>, e: ProfileError) -> super::Located {
+    pub(super) fn sweep_profile_error(&self, n: &Nested<'_>, e: ProfileError) -> super::Located {
         let p = e.parameter();
         let at = super::find(n.entries, p).unwrap_or(n.index);
         self.fail(at, &n.key, e)
     }
 
-    fn sweep_curve_error(&self, n: &Nested<'_>, e: CurveError) -> super::Located {
-        let p = e.parameter();
-        let at = super::find(n.entries, p).unwrap_or(n.index);
-        self.fail(at, &n.key, e)
-    }
-
-    /// The curve object under `key`.
+    /// The curve object under `key` (any kind with control points; formula curves have none and
+    /// cannot be sweep paths or rails).
     fn sweep_curve(&self, key: &str) -> R<Curve> {
         let n = self.sweep_nested(key)?;
-        let ty = self.sweep_nested_type(&n)?;
-        let k = |m: &str| format!("{key}.{m}");
-        let points = |name: &str| -> R<Vec<DVec3>> {
-            self.sweep_points3(self.sweep_member(&n, name)?, &k(name))
-        };
-        let optional_list = |name: &str| -> R<Option<Vec<f64>>> {
-            match super::find(n.entries, name) {
-                Some(i) => Ok(Some(self.sweep_numbers(i, &k(name))?)),
-                None => Ok(None),
-            }
-        };
-        let degree = || -> R<usize> {
-            let i = self.sweep_member(&n, "degree")?;
-            let d = self.number_at(i, &k("degree"))?;
-            if d >= 0.0 && d.fract() == 0.0 && d <= 1024.0 {
-                Ok(d as usize)
-            } else {
-                Err(self.fail(i, &k("degree"), "expected a whole number of at most 1024"))
-            }
-        };
-        let curve = match ty {
-            "bezier" => {
-                self.sweep_nested_keys(&n, &["points"])?;
-                Bezier::new(points("points")?).map(Curve::Bezier)
-            }
-            "hermite" => {
-                self.sweep_nested_keys(&n, &["points", "tangents"])?;
-                let (p, m) = (points("points")?, points("tangents")?);
-                for (name, list) in [("points", &p), ("tangents", &m)] {
-                    if list.len() != 2 {
-                        let i = self.sweep_member(&n, name)?;
-                        return Err(self.fail(i, &k(name), "expected 2 points"));
-                    }
-                }
-                Hermite::new(p[0], m[0], p[1], m[1]).map(Curve::Hermite)
-            }
-            "bspline" => {
-                self.sweep_nested_keys(&n, &["degree", "points", "knots"])?;
-                let (d, p) = (degree()?, points("points")?);
-                match optional_list("knots")? {
-                    Some(knots) => BSpline::new(d, p, knots),
-                    None => BSpline::clamped(d, p),
-                }
-                .map(Curve::BSpline)
-            }
-            "nurbs" => {
-                self.sweep_nested_keys(&n, &["degree", "points", "weights", "knots"])?;
-                let (d, p) = (degree()?, points("points")?);
-                let w = optional_list("weights")?.unwrap_or_else(|| vec![1.0; p.len()]);
-                match optional_list("knots")? {
-                    Some(knots) => Nurbs::new(d, p, w, knots),
-                    None => Nurbs::clamped(d, p, w),
-                }
-                .map(Curve::Nurbs)
-            }
-            "interpolating" => {
-                self.sweep_nested_keys(&n, &["points", "closed"])?;
-                let closed = match super::find(n.entries, "closed") {
-                    Some(i) => match self.reader.doc.values[i as usize] {
-                        Value::Bool(b) => b,
-                        ref v => {
-                            return Err(self.fail(
-                                i,
-                                &k("closed"),
-                                format!("expected a boolean, found {}", v.type_name()),
-                            ));
-                        }
-                    },
-                    None => false,
-                };
-                Interpolating::new(points("points")?, closed).map(Curve::Interpolating)
-            }
-            other => {
+        match self.curve_object(&n)? {
+            Parametric::Curve(c) => Ok(c),
+            Parametric::Formula(_) => {
                 let t = self.sweep_member(&n, "type")?;
-                return Err(self.fail(
+                Err(self.fail(
                     t,
-                    &k("type"),
-                    format!(
-                        "unknown curve type \"{other}\" (expected bezier, hermite, bspline, nurbs or interpolating)"
-                    ),
-                ));
+                    &format!("{key}.type"),
+                    "a formula curve has no control points: it cannot be a sweep path or a \
+                     ruled-surface rail (use it as a profile, or a bezier/bspline/nurbs curve)",
+                ))
             }
-        };
-        curve.map_err(|e| self.sweep_curve_error(&n, e))
+        }
     }
 }

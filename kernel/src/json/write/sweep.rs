@@ -41,16 +41,36 @@ fn profile(p: &Profile) -> String {
     format!("{{\"type\": \"{}\", {body}}}", p.name())
 }
 
-/// A curve object.
+/// A curve object (a composite writes its pieces, which are never composite themselves).
 fn curve(c: &Curve) -> String {
+    match c {
+        Curve::Composite(k) => {
+            let pieces: Vec<String> = k.parts().iter().map(simple_curve).collect();
+            let joins: Vec<String> = k
+                .joins()
+                .iter()
+                .map(|j| format!("\"{}\"", j.name()))
+                .collect();
+            format!(
+                "{{\"type\": \"composite\", \"pieces\": [{}], \"continuity\": [{}]}}",
+                pieces.join(", "),
+                joins.join(", ")
+            )
+        }
+        _ => simple_curve(c),
+    }
+}
+
+/// A curve object of any kind but composite.
+fn simple_curve(c: &Curve) -> String {
     let points = |p: &[glam::DVec3]| list(p, |q| vec3(*q));
     let numbers = |x: &[f64]| list(x, |v| num(*v));
     let body = match c {
         Curve::Bezier(b) => format!("\"points\": {}", points(b.points())),
         Curve::Hermite(h) => format!(
             "\"points\": {}, \"tangents\": {}",
-            points(&h.points()),
-            points(&h.tangents())
+            points(h.points()),
+            points(h.tangents())
         ),
         Curve::BSpline(b) => format!(
             "\"degree\": {}, \"points\": {}, \"knots\": {}",
@@ -70,6 +90,8 @@ fn curve(c: &Curve) -> String {
             points(i.points()),
             i.closed()
         ),
+        Curve::CubicThrough(t) => format!("\"points\": {}", points(t.points())),
+        Curve::Composite(_) => unreachable!("Composite::new refuses composite pieces"),
     };
     format!("{{\"type\": \"{}\", {body}}}", c.name())
 }

@@ -204,6 +204,12 @@ impl Emitter {
 
 /// Parses `text` into postfix code that leaves one value on the stack.
 pub fn parse(text: &str) -> Result<Vec<Op>, ParseError> {
+    parse_in(text, ["x", "y", "z"])
+}
+
+/// Parses `text` with the three variable slots named `names` (e.g. `["u", "v", "w"]` for a formula
+/// curve or surface: `u` is then read from the first coordinate). An empty name is no variable.
+pub fn parse_in(text: &str, names: [&str; 3]) -> Result<Vec<Op>, ParseError> {
     if text.len() > MAX_LENGTH {
         return fail(0, format!("longer than {MAX_LENGTH} bytes"));
     }
@@ -225,12 +231,13 @@ pub fn parse(text: &str) -> Result<Vec<Op>, ParseError> {
                 expect_operand = false;
             }
             Token::Name(name) if expect_operand => {
-                let op = match name.as_str() {
-                    "x" => Some(Op::X),
-                    "y" => Some(Op::Y),
-                    "z" => Some(Op::Z),
-                    "pi" => Some(Op::Const(std::f64::consts::PI)),
-                    "e" => Some(Op::Const(std::f64::consts::E)),
+                let slot = names.iter().position(|v| !v.is_empty() && v == name);
+                let op = match (slot, name.as_str()) {
+                    (Some(0), _) => Some(Op::X),
+                    (Some(1), _) => Some(Op::Y),
+                    (Some(_), _) => Some(Op::Z),
+                    (None, "pi") => Some(Op::Const(std::f64::consts::PI)),
+                    (None, "e") => Some(Op::Const(std::f64::consts::E)),
                     _ => None,
                 };
                 if let Some(op) = op {
@@ -244,11 +251,13 @@ pub fn parse(text: &str) -> Result<Vec<Op>, ParseError> {
                     args.push(1);
                     k += 1; // the '('
                 } else {
+                    let vars: Vec<&str> = names.into_iter().filter(|v| !v.is_empty()).collect();
                     return fail(
                         column,
                         format!(
-                            "unknown name '{name}' (variables x, y, z; constants pi, e; \
-                             functions sin, cos, exp, log, sqrt, abs, min, max, pow)"
+                            "unknown name '{name}' (variables {}; constants pi, e; \
+                             functions sin, cos, exp, log, sqrt, abs, min, max, pow)",
+                            vars.join(", ")
                         ),
                     );
                 }
