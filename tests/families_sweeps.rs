@@ -340,3 +340,32 @@ fn ruled_and_loft_tessellations_are_closed() {
     // approximate them, so the volume is close to (not exactly) the prismatoid's.
     assert!(rel_err(signed_volume(&m), loft.volume()) < 0.05);
 }
+
+#[test]
+fn radial_profile_extrusion_has_the_polar_area() {
+    // ρ(u) = 1 + 0.3 cos 5u: area ½∫ρ² du = ½(2π + 0.09π) = 1.045π; height 1.
+    check("extrude_radial.json", 1, 0, 1.045 * PI);
+}
+
+#[test]
+fn closed_bezier_profile_revolves_to_its_pappus_volume() {
+    use solidkit_kernel::curve::{Curve3, gauss_legendre, integrate};
+    // The profile's first moment ∫∫ x dA = ∮ x²/2 dy (Green), on the exact curve piece by piece.
+    let pieces = [
+        [[0.4, -0.5], [1.4, -0.6], [1.4, 0.6], [0.4, 0.5]],
+        [[0.4, 0.5], [0.2, 0.3], [0.2, -0.3], [0.4, -0.5]],
+    ];
+    let rule = gauss_legendre(24);
+    let moment: f64 = pieces
+        .iter()
+        .map(|p| {
+            let points = p.iter().map(|q| DVec3::new(q[0], q[1], 0.0)).collect();
+            let b = solidkit_kernel::curve::Bezier::new(points).unwrap();
+            integrate(&rule, 0.0, 1.0, |t| {
+                let j = b.jet(t);
+                0.5 * j.point.x * j.point.x * j.d1.y
+            })
+        })
+        .sum();
+    check("revolve_bezier_profile.json", 1, 1, TAU * moment.abs());
+}

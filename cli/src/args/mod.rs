@@ -1,9 +1,11 @@
 //! Command-line arguments (clap), the contract users and later front ends rely on.
 
+mod curve;
 mod r#gen;
 mod memory;
 mod render;
 
+pub use curve::CurveArgs;
 pub use r#gen::GenArgs;
 pub use render::{GalleryArgs, RenderArgs, parse_size, parse_view};
 pub use solidkit_meshing::pipeline::limits::default_max_memory;
@@ -57,6 +59,10 @@ pub enum Command {
     /// orient, fill holes, split non-manifold vertices; or remesh its winding-number solid),
     /// write it and print the reports before and after; exit 1 if the result is still not one.
     Repair(RepairArgs),
+    /// Evaluate a curve given in JSON (Bézier, Hermite, B-spline, NURBS, interpolating,
+    /// cubic_through, composite, formula): point and derivatives at a parameter, de Casteljau
+    /// split, arc length, and a polyline within a chord-error bound (.obj, .svg, .json).
+    Curve(CurveArgs),
 }
 
 /// How `solidkit repair` works.

@@ -4,6 +4,7 @@ mod bench;
 mod check;
 mod compare;
 mod convert;
+mod curve;
 mod gallery;
 mod r#gen;
 mod mesh;
@@ -28,5 +29,6 @@ pub fn run(command: Command) -> Result<u8> {
         Command::Render(a) => render::run(&a),
         Command::Gallery(a) => gallery::run(&a),
         Command::Repair(a) => repair::run(&a),
+        Command::Curve(a) => curve::run(&a),
     }
 }

@@ -26,8 +26,10 @@
 //! sharpness}]). Height fields: `heightfield` (min [x, y], max [x, y], base, and one of `bezier`,
 //! `samples` with optional `interpolation`, or `png` with `heights`). Sweeps: `extrude` (profile,
 //! height, twist, scale), `revolve` (profile, angle), `sweep` (profile, path), `loft` (bottom, top,
-//! height), `ruled` (bottom, top); profiles `circle` / `rectangle` / `polygon`; curves `bezier` /
-//! `hermite` / `bspline` / `nurbs` / `interpolating`. Others: `gyroid` (thickness),
+//! height), `ruled` (bottom, top); profiles `circle` / `rectangle` / `polygon` / `curve` (a closed
+//! curve, flattened) / `radial` (rho formula in u); curves `bezier` / `hermite` / `bspline` /
+//! `nurbs` / `interpolating` / `cubic_through` / `composite` / `formula` (see [`curve_from_str`]
+//! for curve files). Others: `gyroid` (thickness),
 //! `smooth_union` / `smooth_intersection` / `smooth_difference` (radius, children), `offset`
 //! (distance, child), `shell` (thickness, child).
 //! Any node may carry a `comment` string.

@@ -68,8 +68,15 @@ impl Params<'_, '_> {
     /// A located error for a curve error, at the member it names when there is one.
     fn curve_error(&self, n: &Nested<'_>, e: CurveError) -> super::Located {
         let at = super::find(n.entries, e.parameter()).unwrap_or(n.index);
-        let label = if n.key.is_empty() { "curve" } else { &n.key };
-        self.reader.located(at, label, e)
+        // The error's text starts with the key it is about: prefix the object's path.
+        super::Located {
+            offset: self.reader.offset(at),
+            message: if n.key.is_empty() {
+                e.to_string()
+            } else {
+                format!("{}.{e}", n.key)
+            },
+        }
     }
 
     /// The curve described by the object `n`.
@@ -182,9 +189,9 @@ impl Params<'_, '_> {
         Composite::new(parts, joins)
             .map(Curve::Composite)
             .map_err(|e| match &e {
-                CurveError::Join { index, .. } if *index > 0 && *index < items.len() => self
+                CurveError::Join { index, problem } if *index > 0 && *index < items.len() => self
                     .reader
-                    .located(items[*index], &format!("{list_key}[{index}]"), e),
+                    .located(items[*index], &format!("{list_key}[{index}]"), problem),
                 _ => self.curve_error(n, e),
             })
     }

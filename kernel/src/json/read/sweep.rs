@@ -5,11 +5,8 @@
 //! Profiles are objects: `{"type": "circle", "radius": r, "center": [x, y]}`,
 //! `{"type": "rectangle", "size": [w, h] or s, "center": [x, y]}` (centres optional, default the
 //! origin), `{"type": "polygon", "points": [[x, y], …], "holes": [[[x, y], …], …]}` (holes
-//! optional; inside by the even-odd rule). Curves are objects with points as [x, y, z] (or [x, y]
-//! for z = 0): `bezier` (points), `hermite` (points: [P₀, P₁], tangents: [M₀, M₁]), `bspline`
-//! (degree, points, knots; knots omitted: clamped uniform), `nurbs` (degree, points, weights,
-//! knots; weights omitted: all 1; knots omitted: clamped uniform), `interpolating` (points,
-//! closed: false by default).
+//! optional; inside by the even-odd rule), and `curve` / `radial` profiles (read in
+//! `curve_profile.rs`). Curves are read in `curve.rs`.
 
 use super::super::document::Value;
 use super::{Params, R};
