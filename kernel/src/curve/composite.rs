@@ -102,7 +102,11 @@ impl Composite {
                 Continuity::C0 => {}
                 Continuity::G1 => {
                     let angle = end.d1.angle_between(start.d1);
-                    if end.d1.length() == 0.0 || start.d1.length() == 0.0 || !(angle <= 1e-6) {
+                    if end.d1.length() == 0.0
+                        || start.d1.length() == 0.0
+                        || angle.is_nan()
+                        || angle > 1e-6
+                    {
                         return fail(format!(
                             "declared G1 but the tangents differ by {:.3e} degrees",
                             angle.to_degrees()

@@ -8,6 +8,7 @@
 //! standard error itself.
 
 mod api;
+mod curve;
 mod defines;
 mod error;
 mod node;
@@ -229,6 +230,7 @@ fn engine(
         }
     }
     api::register(&mut engine, limits.max_nodes, resolver, exported);
+    curve::register(&mut engine);
     engine
 }
 

@@ -27,6 +27,19 @@ pub(super) fn from_map(m: Map, resolver: &dyn MeshResolver, max_nodes: u64) -> F
     }
 }
 
+/// The JSON text of a map of plain values (numbers, strings, booleans, arrays, maps), for readers
+/// of objects that are not nodes (curves); `what` names the function in errors.
+pub(super) fn json_text(m: Map, what: &str) -> Fallible<String> {
+    let mut nodes = 0u64;
+    let mut text = String::new();
+    write(&mut text, Dynamic::from_map(m), &mut nodes, 0)
+        .map_err(|e| format!("{what}: {}", e.to_string().trim_start_matches("node: ")))?;
+    if nodes > 0 {
+        return fail(format!("{what}: a Solid cannot be part of a curve"));
+    }
+    Ok(text)
+}
+
 /// Appends the JSON text of `v` to `out` (text, not a `serde_json::Value`, so the embedded
 /// trees of solids may be of any depth: the kernel's reader handles them with a work list).
 fn write(out: &mut String, v: Dynamic, nodes: &mut u64, depth: usize) -> Fallible<()> {

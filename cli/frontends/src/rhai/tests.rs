@@ -330,3 +330,61 @@ fn constructors_check_the_deadline() {
         assert!(e.to_string().contains("0 s time limit"), "{script}: {e}");
     }
 }
+
+/// Curves from scripts: the notes' numbers through `curve(map)` and its methods, a polyline as
+/// a profile, and located errors.
+#[test]
+fn curves_evaluate_split_and_flatten() {
+    let checks = r#"
+        let q = curve(#{type: "bezier", points: [[0, -1], [1, 2], [5, -1]]});
+        let p = q.point(0.3);
+        if (p[0] - 0.87).abs() > 1e-14 || (p[1] - 0.26).abs() > 1e-14 { throw `point ${p}`; }
+        let d = q.derivative(0.3);
+        if (d[0] - 3.8).abs() > 1e-13 || (d[1] - 2.4).abs() > 1e-13 { throw `derivative ${d}`; }
+        let s = q.split(0.5);
+        if s.left.points[2] != [1.75, 0.5, 0.0] || s.right.points[1] != [3.0, 0.5, 0.0] {
+            throw `split ${s}`;
+        }
+        let t = curve(#{type: "cubic_through", points: [[0, 0], [1, 0], [1, 1], [0, 1]]});
+        let m = t.point(2.0 / 3.0);
+        if (m[0] - 1.0).abs() > 1e-14 || (m[1] - 1.0).abs() > 1e-14 { throw `through ${m}`; }
+        let c = curve(#{type: "nurbs", degree: 2, points: [[1, 0], [1, 1], [0, 1]],
+                        weights: [1, 0.7071067811865476, 1]});
+        if (c.length() - 1.5707963267948966).abs() > 1e-12 { throw `length ${c.length()}`; }
+        let line = c.polyline(0.0001);
+        for v in line { if ((v[0] * v[0] + v[1] * v[1]).sqrt() - 1.0).abs() > 1e-14 { throw `on circle ${v}`; } }
+        if c.samples(5).len() != 5 || c.domain() != [0.0, 1.0] || c.is_closed() { throw "samples"; }
+        let rose = curve(#{type: "formula", x: "cos(2*u)*cos(u)", y: "cos(2*u)*sin(u)",
+                           domain: [0, 6.283185307179586]});
+        if !rose.is_closed() { throw "rose"; }
+        sphere(1)
+    "#;
+    solid(checks);
+    // The example script builds its solid from a polyline.
+    let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../fixtures/curves/curves.rhai");
+    let script = std::fs::read_to_string(&path).unwrap();
+    let s = solid(&script);
+    assert_eq!(s.kind().name(), "extrude");
+    for (script, message) in [
+        (
+            r#"curve(#{type: "bezier", points: [[0, "a"]]})"#,
+            "points[0]",
+        ),
+        (r#"curve(#{type: "spiral"})"#, "unknown curve type"),
+        (
+            r#"curve(#{type: "bezier", points: [[0, 0], [1, 1]]}).point(2)"#,
+            "outside the curve's domain",
+        ),
+        (
+            r#"curve(#{type: "formula", x: "u", y: "0", domain: [0, 1]}).split(0.5)"#,
+            "no control points",
+        ),
+        (
+            r#"curve(#{type: "bezier", points: [[0, 0], [1, 1]]}).polyline(0)"#,
+            "chord_error",
+        ),
+    ] {
+        let e = run(script).unwrap_err().to_string();
+        assert!(e.contains(message), "{script}: {e}");
+    }
+}
