@@ -219,3 +219,44 @@ fn bad_curves_are_located_errors() {
         assert!(err.contains(message), "{err}");
     }
 }
+
+#[test]
+fn bad_curve_profiles_are_located_errors() {
+    let dir = tempfile::tempdir().unwrap();
+    let cases = [
+        (
+            r#"{"type": "extrude", "height": 1, "profile": {"type": "curve",
+                "curve": {"type": "bezier", "points": [[0, 0], [1, 1], [2, 0]]}}}"#,
+            "profile: the curve must be closed",
+        ),
+        (
+            r#"{"type": "extrude", "height": 1, "profile": {"type": "radial", "rho": "1",
+                "chord_error": 0.01, "samples": 10}}"#,
+            "profile.chord_error: give either chord_error or samples",
+        ),
+        (
+            r#"{"type": "extrude", "height": 1, "profile": {"type": "radial", "rho": "1 + v"}}"#,
+            "profile.rho: rho: column 5: unknown name 'v'",
+        ),
+        (
+            r#"{"type": "sweep", "profile": {"type": "circle", "radius": 0.1},
+                "path": {"type": "formula", "x": "u", "y": "0", "domain": [0, 1]}}"#,
+            "path.type: a formula curve has no control points",
+        ),
+        (
+            r#"{"type": "extrude", "height": 1, "profile": {"type": "curve",
+                "curve": {"type": "composite", "continuity": "C1", "pieces": [
+                  {"type": "bezier", "points": [[0, 0], [1, 1], [2, 0]]},
+                  {"type": "bezier", "points": [[2, 0], [1, -1], [0, 0]]}]}}}"#,
+            "profile.curve.pieces[1]: declared C1 but the derivative jumps",
+        ),
+    ];
+    for (i, (text, message)) in cases.iter().enumerate() {
+        let f = dir.path().join(format!("tree{i}.json"));
+        std::fs::write(&f, text).unwrap();
+        let o = solidkit(&["mesh", path_str(&f)]);
+        let err = String::from_utf8_lossy(&o.stderr);
+        assert_eq!(o.status.code(), Some(2), "{text}: {err}");
+        assert!(err.contains(message), "{text}: {err}");
+    }
+}

@@ -369,3 +369,25 @@ fn closed_bezier_profile_revolves_to_its_pappus_volume() {
         .sum();
     check("revolve_bezier_profile.json", 1, 1, TAU * moment.abs());
 }
+
+#[test]
+fn loft_between_sampled_radial_profiles_has_the_prismatoid_volume() {
+    // 200 corners each at u = 2πk/200: ρ(u)(cos u, sin u); the loft joins corner k to corner k.
+    let corners = |rho: &dyn Fn(f64) -> f64| -> Vec<DVec2> {
+        (0..200)
+            .map(|k| {
+                let u = TAU * k as f64 / 200.0;
+                DVec2::from_angle(u) * rho(u)
+            })
+            .collect()
+    };
+    let bottom = corners(&|u| 1.0 + 0.3 * (5.0 * u).cos());
+    let top = corners(&|u| 0.6 - 0.1 * (5.0 * u).cos());
+    let middle: Vec<DVec2> = bottom
+        .iter()
+        .zip(&top)
+        .map(|(a, b)| a.lerp(*b, 0.5))
+        .collect();
+    let exact = 1.2 / 6.0 * (area(&bottom) + 4.0 * area(&middle) + area(&top));
+    check("loft_radial.json", 1, 0, exact);
+}

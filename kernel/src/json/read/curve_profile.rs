@@ -3,11 +3,14 @@
 //! "chord_error": e}` (the closed curve `ρ(u)·(cos u, sin u)`, `u ∈ [0, 2π]`: the radial equation
 //! of a profile). Both become polygon profiles: the curve flattened with a chord error below `e`
 //! (certified for curves with control points, estimated from samples for formulas; default
-//! `1e-4` of the curve's size), so the polygon is within `e` of the curve everywhere.
+//! `1e-4` of the curve's size), so the polygon is within `e` of the curve everywhere; or, with
+//! `"samples": n` instead, the `n` points at equally spaced parameters (the same corner count
+//! for every profile, as `loft` needs).
 
 use super::super::document::Value;
 use super::sweep::Nested;
 use super::{Params, R};
+use crate::curve::flatten::uniform_params;
 use crate::curve::{FormulaCurve, Parametric};
 use crate::profile::Profile;
 use glam::DVec2;
@@ -20,7 +23,7 @@ impl Params<'_, '_> {
     pub(super) fn curve_profile(&self, n: &Nested<'_>, ty: &str) -> R<Profile> {
         let k = |m: &str| format!("{}.{m}", n.key);
         let curve = if ty == "radial" {
-            self.sweep_nested_keys(n, &["rho", "chord_error"])?;
+            self.sweep_nested_keys(n, &["rho", "chord_error", "samples"])?;
             let i = self.sweep_member(n, "rho")?;
             let Value::String(rho) = &self.reader.doc.values[i as usize] else {
                 return Err(self.fail(i, &k("rho"), "expected a formula string in u"));
@@ -28,7 +31,7 @@ impl Params<'_, '_> {
             let f = FormulaCurve::radial(rho).map_err(|e| self.fail(i, &k("rho"), e))?;
             Parametric::Formula(f)
         } else {
-            self.sweep_nested_keys(n, &["curve", "chord_error"])?;
+            self.sweep_nested_keys(n, &["curve", "chord_error", "samples"])?;
             let i = self.sweep_member(n, "curve")?;
             let Value::Object(entries) = &self.reader.doc.values[i as usize] else {
                 return Err(self.fail(i, &k("curve"), "expected a curve object"));
@@ -54,20 +57,56 @@ impl Params<'_, '_> {
                 ),
             ));
         }
-        let tolerance = match super::find(n.entries, "chord_error") {
+        let line = match super::find(n.entries, "samples") {
             Some(i) => {
-                let e = self.number_at(i, &k("chord_error"))?;
-                if !(e > 0.0 && e.is_finite()) {
-                    return Err(self.fail(i, &k("chord_error"), "expected a positive number"));
+                if let Some(j) = super::find(n.entries, "chord_error") {
+                    return Err(self.fail(
+                        j,
+                        &k("chord_error"),
+                        "give either chord_error or samples, not both",
+                    ));
                 }
-                e
+                let count = self.number_at(i, &k("samples"))?;
+                if !((3.0..=1e6).contains(&count) && count.fract() == 0.0) {
+                    return Err(self.fail(
+                        i,
+                        &k("samples"),
+                        "expected a whole number from 3 to 1000000",
+                    ));
+                }
+                // `count` corners: the last parameter repeats the first point and is dropped.
+                let params = uniform_params(curve.domain(), count as usize + 1);
+                params.iter().map(|&u| curve.point(u)).collect::<Vec<_>>()
             }
-            None => DEFAULT_RELATIVE_CHORD_ERROR * curve.size(),
+            None => {
+                let tolerance = match super::find(n.entries, "chord_error") {
+                    Some(i) => {
+                        let e = self.number_at(i, &k("chord_error"))?;
+                        if !(e > 0.0 && e.is_finite()) {
+                            return Err(self.fail(
+                                i,
+                                &k("chord_error"),
+                                "expected a positive number",
+                            ));
+                        }
+                        e
+                    }
+                    None => DEFAULT_RELATIVE_CHORD_ERROR * curve.size(),
+                };
+                curve
+                    .polyline(tolerance)
+                    .map_err(|e| self.fail(at, &k("chord_error"), e))?
+                    .points
+            }
         };
-        let line = curve
-            .polyline(tolerance)
-            .map_err(|e| self.fail(at, &k("chord_error"), e))?;
-        let mut points: Vec<DVec2> = line.points.iter().map(|p| p.truncate()).collect();
+        if let Some(p) = line.iter().find(|p| !p.is_finite()) {
+            return Err(self.fail(
+                at,
+                &n.key,
+                format!("the curve has a point that is not finite: {p}"),
+            ));
+        }
+        let mut points: Vec<DVec2> = line.iter().map(|p| p.truncate()).collect();
         points.pop(); // the closing point repeats the first
         Profile::polygon(points, Vec::new()).map_err(|e| self.sweep_profile_error(n, e))
     }
