@@ -21,6 +21,7 @@ import json as _json
 from typing import Any
 
 from ._solidkit import (
+    Curve,
     LoadError,
     Mesh,
     MeshIOError,
@@ -34,6 +35,7 @@ from ._solidkit import (
     cone,
     cube,
     cuboid,
+    curve_from_json,
     cylinder,
     difference,
     from_json,
@@ -52,6 +54,7 @@ from ._solidkit import (
 )
 
 __all__ = [
+    "Curve",
     "LoadError",
     "Mesh",
     "MeshIOError",
@@ -64,6 +67,7 @@ __all__ = [
     "compare",
     "cone",
     "cube",
+    "curve",
     "cuboid",
     "cylinder",
     "difference",
@@ -113,3 +117,18 @@ def node(kind: "str | dict[str, Any]", /, **params: Any) -> Solid:
     else:
         description = {"type": kind, **params}
     return from_json(_json.dumps(_embed(description), allow_nan=False), name="node")
+
+
+def curve(kind: "str | dict[str, Any]", /, **params: Any) -> Curve:
+    """A curve of the JSON format (``docs/json-format.md``, "Curves"), to evaluate.
+
+    ``curve("bezier", points=[[0, -1], [1, 2], [5, -1]]).point(0.3)`` is ``(0.87, 0.26, 0.0)``;
+    every kind works: ``bezier``, ``hermite``, ``bspline``, ``nurbs``, ``interpolating``,
+    ``cubic_through``, ``composite`` (continuity checked) and ``formula``.
+    """
+    if isinstance(kind, dict):
+        description = dict(kind)
+        description.update(params)
+    else:
+        description = {"type": kind, **params}
+    return curve_from_json(_json.dumps(description, allow_nan=False))

@@ -228,3 +228,37 @@ def gen(
     threads: Optional[int] = None,
 ) -> dict[str, Any]:
     """Writes a suite of test solids with ground truth; returns ``manifest.json`` as a dict."""
+
+class Curve:
+    """A curve of the JSON format (``solidkit.curve(kind, **keys)``). Immutable."""
+
+    @property
+    def kind(self) -> str:
+        """``"bezier"``, ``"hermite"``, ``"bspline"``, ``"nurbs"``, ``"interpolating"``,
+        ``"cubic_through"``, ``"composite"`` or ``"formula"``."""
+    @property
+    def domain(self) -> Tuple[float, float]:
+        """The parameter interval."""
+    @property
+    def closed(self) -> bool:
+        """True when the curve ends where it starts."""
+    def point(self, u: float) -> Tuple[float, float, float]:
+        """The point at ``u`` (a ValueError outside the domain)."""
+    def derivative(self, u: float) -> Tuple[float, float, float]:
+        """The first derivative at ``u``."""
+    def second_derivative(self, u: float) -> Tuple[float, float, float]:
+        """The second derivative at ``u``."""
+    def tangent(self, u: float) -> Tuple[float, float, float]:
+        """The unit tangent at ``u``."""
+    def length(self) -> float:
+        """The arc length (Gauss-Legendre quadrature)."""
+    def split(self, u: float) -> dict[str, Any]:
+        """The de Casteljau split of the Bezier piece holding ``u``: ``left`` and ``right``
+        (``points`` N x 3, ``weights``, ``interval``) and ``piece``."""
+    def polyline(self, chord_error: float) -> np.ndarray:
+        """Vertices (N x 3, read-only) of a polyline within ``chord_error`` of the curve."""
+    def samples(self, n: int) -> np.ndarray:
+        """``n`` points (N x 3, read-only) at equally spaced parameters."""
+
+def curve_from_json(text: str) -> Curve:
+    """A curve from the JSON text of one curve object."""
