@@ -67,6 +67,7 @@ pub mod profile;
 pub mod program;
 pub mod simd;
 mod solid;
+pub mod surface;
 pub mod tessellate;
 mod transform;
 pub mod triangulate;

@@ -20,6 +20,7 @@ mod heightfield;
 mod polyhedra;
 mod quadric;
 mod subdivide;
+mod surface;
 mod sweep;
 
 pub use curve::curve_from_str;
@@ -511,6 +512,8 @@ impl Params<'_, '_> {
             "mesh" => self.mesh_file()?,
             "prism" => self.prism()?,
             "expr" => self.expr()?,
+            "bezier_patch" | "bspline_surface" | "nurbs_surface" | "param_surface"
+            | "bezier_triangle" | "pn_triangles" => self.surface(ty)?,
             other => {
                 let t = self.at("type")?;
                 return Err(self.fail(t, "type", format!("unknown node type \"{other}\"")));

@@ -12,6 +12,7 @@ use std::fmt::Write;
 
 mod blob;
 mod heightfield;
+mod surface;
 mod polyhedra;
 mod quadric;
 mod sweep;

@@ -139,7 +139,7 @@ impl Params<'_, '_> {
     }
 
     /// The items of the array at `index`.
-    fn items(&self, index: u32, key: &str) -> R<&[u32]> {
+    pub(super) fn items(&self, index: u32, key: &str) -> R<&[u32]> {
         match &self.reader.doc.values[index as usize] {
             Value::Array(items) => Ok(items),
             v => Err(self.fail(
@@ -150,7 +150,7 @@ impl Params<'_, '_> {
         }
     }
 
-    fn points3(&self, key: &str) -> R<Vec<DVec3>> {
+    pub(super) fn points3(&self, key: &str) -> R<Vec<DVec3>> {
         let list = self.items(self.at(key)?, key)?;
         list.iter()
             .enumerate()
@@ -175,7 +175,7 @@ impl Params<'_, '_> {
     }
 
     /// Lists of vertex indices (non-negative integers below 2³²).
-    fn index_lists(&self, key: &str) -> R<Vec<Vec<u32>>> {
+    pub(super) fn index_lists(&self, key: &str) -> R<Vec<Vec<u32>>> {
         let lists = self.items(self.at(key)?, key)?;
         let mut out = Vec::with_capacity(lists.len());
         for (k, &l) in lists.iter().enumerate() {

@@ -54,6 +54,7 @@ pub(super) fn mesh(m: &MeshSolid) -> String {
             let child = super::members(&NodeKind::Primitive((**child).clone()));
             format!("\"scheme\": \"{scheme}\", \"levels\": {levels}, \"child\": {{{child}}}")
         }
+        MeshSource::Surface(spec) => super::surface::members(spec),
     }
 }
 

@@ -86,6 +86,9 @@ pub enum MeshSource {
         /// `platonic`; never itself subdivided, so this nests one level only).
         child: Box<Primitive>,
     },
+    /// A parametric surface closed into a solid (JSON `bezier_patch`, `bspline_surface`,
+    /// `nurbs_surface`, `param_surface`, `bezier_triangle`, `pn_triangles`).
+    Surface(Box<crate::surface::SurfaceSpec>),
 }
 
 impl MeshSource {
@@ -96,6 +99,7 @@ impl MeshSource {
             MeshSource::File { .. } => "mesh",
             MeshSource::Prism(_) => "prism",
             MeshSource::Subdivided { .. } => "subdivide",
+            MeshSource::Surface(s) => s.kind.name(),
         }
     }
 }
@@ -166,7 +170,7 @@ impl MeshSolid {
         Self::with_source(MeshSource::Prism(prism), &mesh)
     }
 
-    pub(super) fn with_source(
+    pub(crate) fn with_source(
         source: MeshSource,
         mesh: &IndexedMesh,
     ) -> Result<Self, MeshSolidError> {

@@ -42,7 +42,9 @@ impl MeshSolid {
                     owned = prism.to_polyhedron()?;
                     faces_of(&owned)
                 }
-                MeshSource::Subdivided { .. } => return Err(not_polyhedral()),
+                MeshSource::Subdivided { .. } | MeshSource::Surface(_) => {
+                    return Err(not_polyhedral());
+                }
             },
             _ => return Err(not_polyhedral()),
         };
