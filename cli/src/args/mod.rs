@@ -49,6 +49,10 @@ pub enum Command {
     /// Subdivide a polygon mesh (Catmull-Clark, Loop, butterfly, Doo-Sabin), write it and print
     /// the topology report of the result.
     Subdivide(SubdivideArgs),
+    /// Gaussian, mean and principal curvatures per vertex, written as PLY vertex properties
+    /// (discrete for a mesh file, exact for a tree whose root is a parametric surface), with a
+    /// summary and the Gauss-Bonnet check.
+    Curvature(CurvatureArgs),
     /// Render a PNG: a solid ray cast from its field, a mesh file rasterised, or a
     /// cross-section (--section z=C) of a solid.
     Render(RenderArgs),
@@ -102,6 +106,24 @@ pub struct RepairArgs {
     #[arg(long)]
     pub no_self_intersections: bool,
     /// Print JSON: {"before", "after", "changes", "rebuild", ...}.
+    #[arg(long)]
+    pub json: bool,
+}
+
+/// Arguments of `solidkit curvature`.
+#[derive(Debug, clap::Args)]
+pub struct CurvatureArgs {
+    /// A mesh file (.stl .obj .ply .off .3mf .glb: discrete curvatures) or a tree (.json .rhai)
+    /// whose root is a parametric surface node (exact curvatures at its tessellation's vertices).
+    pub input: PathBuf,
+    /// Write the mesh here as binary PLY with the vertex properties gaussian, mean, k1, k2 and
+    /// boundary (replaced atomically).
+    #[arg(short, long)]
+    pub output: PathBuf,
+    /// Folders besides the input's own that files named in a tree may come from.
+    #[arg(long, value_name = "DIR")]
+    pub allow_path: Vec<PathBuf>,
+    /// Print the summary as JSON.
     #[arg(long)]
     pub json: bool,
 }

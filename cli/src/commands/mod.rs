@@ -4,6 +4,7 @@ mod bench;
 mod check;
 mod compare;
 mod convert;
+mod curvature;
 mod curve;
 mod gallery;
 mod r#gen;
@@ -26,6 +27,7 @@ pub fn run(command: Command) -> Result<u8> {
         Command::Bench(a) => bench::run(&a),
         Command::BenchCase(a) => bench::run_case(&a),
         Command::Subdivide(a) => subdivide::run(&a),
+        Command::Curvature(a) => curvature::run(&a),
         Command::Render(a) => render::run(&a),
         Command::Gallery(a) => gallery::run(&a),
         Command::Repair(a) => repair::run(&a),

@@ -34,6 +34,7 @@ mod obj_scan;
 mod off;
 mod ply;
 mod ply_header;
+mod ply_scalars;
 mod polygon;
 mod polygon_mesh;
 mod resolver;
@@ -69,6 +70,7 @@ pub use polygon_mesh::{
     PolygonMesh, read_polygon_mesh, read_polygon_mesh_bytes, write_polygon_mesh,
     write_polygon_mesh_with,
 };
+pub use ply_scalars::write_ply_with_scalars;
 pub use resolver::FileMeshResolver;
 pub use stl::binary_records as stl_binary_records;
 pub use stored::{encode_mesh, stored_mesh};
