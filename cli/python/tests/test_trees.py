@@ -131,6 +131,20 @@ def test_formula_solids_through_node():
         sk.node("expr", formula="x + q", bounds=[[0, 0, 0], [1, 1, 1]])
 
 
+def test_parametric_surfaces_through_node():
+    # The notes' z = sin(uv) over [-2, 2]^2 on the base z = -1.5: volume 16 x 1.5 (sin(uv) is odd).
+    hill = sk.node("param_surface", z="sin(u*v)", u=[-2, 2], v=[-2, 2], base=-1.5)
+    r = hill.mesh(resolution=96).report()
+    assert r["closed"] and r["shells"] == 1
+    assert abs(r["volume"] - 24.0) < 0.01 * 24.0
+    # A flat bilinear Bezier patch 2 x 3 thickened by 0.25: area x thickness.
+    slab = sk.node("bezier_patch", points=[[[0, 0, 0], [2, 0, 0]], [[0, 3, 0], [2, 3, 0]]],
+                   thickness=0.25)
+    assert abs(slab.mesh(resolution=96).report()["volume"] - 1.5) < 0.02 * 1.5
+    with pytest.raises(sk.LoadError, match="give \"thickness\" or \"base\""):
+        sk.node("bezier_patch", points=[[[0, 0, 0], [1, 0, 0]], [[0, 1, 0], [1, 1, 0]]])
+
+
 def test_rhai_scripts_take_defines_as_constants(tmp_path):
     f = tmp_path / "m.rhai"
     f.write_text('let n = if is_def_var("n") { n } else { 1.0 };\nbox([n, size[1], 3.0])\n')

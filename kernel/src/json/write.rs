@@ -12,9 +12,9 @@ use std::fmt::Write;
 
 mod blob;
 mod heightfield;
-mod surface;
 mod polyhedra;
 mod quadric;
+mod surface;
 mod sweep;
 
 const MAX_INDENT: usize = 16;

@@ -124,7 +124,12 @@ mod tests {
         let d = basis_derivatives(3, span, &knots, t);
         let s = 1.0 - t;
         let b = [s * s * s, 3.0 * t * s * s, 3.0 * t * t * s, t * t * t];
-        let db = [-3.0 * s * s, 3.0 * s * s - 6.0 * t * s, 6.0 * t * s - 3.0 * t * t, 3.0 * t * t];
+        let db = [
+            -3.0 * s * s,
+            3.0 * s * s - 6.0 * t * s,
+            6.0 * t * s - 3.0 * t * t,
+            3.0 * t * t,
+        ];
         let ddb = [6.0 * s, -12.0 * s + 6.0 * t, 6.0 * s - 12.0 * t, 6.0 * t];
         for i in 0..4 {
             assert!((d[0][i] - b[i]).abs() < 1e-14);

@@ -88,7 +88,11 @@ pub fn close(sheet: &Sampled, closure: Closure) -> Result<IndexedMesh, SurfaceEr
                 ));
             }
             check_graph(mesh)?;
-            let base = mesh.positions.iter().map(|p| p.truncate().extend(z)).collect();
+            let base = mesh
+                .positions
+                .iter()
+                .map(|p| p.truncate().extend(z))
+                .collect();
             (mesh.positions.clone(), base)
         }
     };
@@ -97,7 +101,11 @@ pub fn close(sheet: &Sampled, closure: Closure) -> Result<IndexedMesh, SurfaceEr
     positions.extend(inner);
     let mut triangles = Vec::with_capacity(2 * mesh.triangles.len() + 2 * boundary.len());
     triangles.extend(mesh.triangles.iter().copied());
-    triangles.extend(mesh.triangles.iter().map(|t| [t[0] + n, t[2] + n, t[1] + n]));
+    triangles.extend(
+        mesh.triangles
+            .iter()
+            .map(|t| [t[0] + n, t[2] + n, t[1] + n]),
+    );
     for &(a, b) in &boundary {
         triangles.push([a, a + n, b]);
         triangles.push([b, a + n, b + n]);

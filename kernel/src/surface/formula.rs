@@ -28,10 +28,7 @@ fn variable(a: f64, k: usize) -> D2 {
         v: 0.0,
         d: [0.0; 3],
     };
-    let mut inner = Dual {
-        v: a,
-        d: [0.0; 3],
-    };
+    let mut inner = Dual { v: a, d: [0.0; 3] };
     inner.d[k] = 1.0;
     let mut outer = D2 {
         v: inner,
@@ -85,7 +82,11 @@ impl FormulaSurface {
             parse("z", z)?,
         ];
         Ok(FormulaSurface {
-            formulas: [x.map(str::to_owned), y.map(str::to_owned), Some(z.to_owned())],
+            formulas: [
+                x.map(str::to_owned),
+                y.map(str::to_owned),
+                Some(z.to_owned()),
+            ],
             code,
             u,
             v,
@@ -109,7 +110,14 @@ impl FormulaSurface {
         let mut out = [[0.0; 6]; 3];
         for (c, code) in self.code.iter().enumerate() {
             let r = run(code, args, &mut stack);
-            out[c] = [r.v.v, r.v.d[0], r.v.d[1], r.d[0].d[0], r.d[0].d[1], r.d[1].d[1]];
+            out[c] = [
+                r.v.v,
+                r.v.d[0],
+                r.v.d[1],
+                r.d[0].d[0],
+                r.d[0].d[1],
+                r.d[1].d[1],
+            ];
         }
         let col = |k: usize| DVec3::new(out[0][k], out[1][k], out[2][k]);
         SurfaceDerivatives {

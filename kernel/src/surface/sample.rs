@@ -108,7 +108,10 @@ type Parts = (
 
 /// The regular grid of a rectangle-parametrised surface meeting the tolerance.
 fn grid(kind: &SurfaceKind, tolerance: Option<f64>) -> Result<Parts, SurfaceError> {
-    let at = |s: f64, t: f64| kind.derivatives(s, t).expect("a rectangle-parametrised kind");
+    let at = |s: f64, t: f64| {
+        kind.derivatives(s, t)
+            .expect("a rectangle-parametrised kind")
+    };
     let bound = match kind {
         SurfaceKind::Bezier(p) | SurfaceKind::BSpline(p) => p.second_derivative_bounds(),
         _ => None,

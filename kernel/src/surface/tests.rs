@@ -62,22 +62,26 @@ fn flat_patch_with_thickness_has_volume_area_times_thickness() {
     assert!(closed_oriented(&m));
     assert!((signed_volume(&m) - 6.0 * 1.5).abs() < 1e-12);
     // An open sheet needs a closure; a base above the sheet is refused.
-    let open = spec(SurfaceKind::Bezier(flat_bilinear(1.0, 1.0)), Closure::Closed);
+    let open = spec(
+        SurfaceKind::Bezier(flat_bilinear(1.0, 1.0)),
+        Closure::Closed,
+    );
     assert!(open.closed_mesh(&NoMeshResolver).is_err());
     let above = spec(
         SurfaceKind::Bezier(flat_bilinear(1.0, 1.0)),
         Closure::Base { z: 2.0 },
     );
-    assert_eq!(above.closed_mesh(&NoMeshResolver).unwrap_err().key(), "base");
+    assert_eq!(
+        above.closed_mesh(&NoMeshResolver).unwrap_err().key(),
+        "base"
+    );
 }
 
 #[test]
 fn bezier_tensor_matches_the_bezier_patch_and_its_derivatives() {
     let pts: Vec<DVec3> = (0..3)
         .flat_map(|j| {
-            (0..4).map(move |i| {
-                DVec3::new(i as f64, j as f64, ((i * 7 + j * 3) % 5) as f64 * 0.3)
-            })
+            (0..4).map(move |i| DVec3::new(i as f64, j as f64, ((i * 7 + j * 3) % 5) as f64 * 0.3))
         })
         .collect();
     let t = TensorSurface::bezier([4, 3], pts.clone()).unwrap();
@@ -178,20 +182,29 @@ fn formula_graph_sin_uv_curvature_matches_the_closed_forms() {
     let graph = FormulaSurface::new(None, None, "sin(u*v)", [-2.0, 2.0], [-2.0, 2.0]).unwrap();
     let full =
         FormulaSurface::new(Some("u"), Some("v"), "sin(u*v)", [-2.0, 2.0], [-2.0, 2.0]).unwrap();
-    for &(u, v) in &[(0.0, 0.0), (1.62, 1.12), (-1.18, -0.8), (0.5, -1.9), (2.0, 2.0)] {
+    for &(u, v) in &[
+        (0.0, 0.0),
+        (1.62, 1.12),
+        (-1.18, -0.8),
+        (0.5, -1.9),
+        (2.0, 2.0),
+    ] {
         let exact = monge_curvature(&sin_uv(u, v));
         for f in [&graph, &full] {
             let d = f.derivatives_at(u, v);
             assert!((d.p.z - (u * v).sin()).abs() < 1e-15);
             let c = d.curvature();
-            assert!((c.gaussian - exact.gaussian).abs() < 1e-12, "{c:?} {exact:?}");
+            assert!(
+                (c.gaussian - exact.gaussian).abs() < 1e-12,
+                "{c:?} {exact:?}"
+            );
             assert!((c.mean - exact.mean).abs() < 1e-12, "{c:?} {exact:?}");
         }
     }
     // The notes' parametric form x = v, y = sin(uv)/2, z = u: a graph y = sin(zx)/2, so its
     // Gaussian curvature is that of h(z, x) = sin(zx)/2 (the sign of H follows the normal).
-    let notes = FormulaSurface::new(Some("v"), Some("sin(u*v)/2"), "u", [-2.0, 2.0], [-2.0, 2.0])
-        .unwrap();
+    let notes =
+        FormulaSurface::new(Some("v"), Some("sin(u*v)/2"), "u", [-2.0, 2.0], [-2.0, 2.0]).unwrap();
     for &(u, v) in &[(1.62, 1.12), (-1.18, -0.8)] {
         let d = sin_uv(u, v);
         let half = HeightDerivatives {
@@ -229,7 +242,10 @@ fn formula_sphere_welds_into_a_closed_solid() {
     let exact = 4.0 / 3.0 * std::f64::consts::PI;
     // Inscribed: below the ball by at most area × chord error (estimated).
     let chord = sheet.chord_error.unwrap();
-    assert!(v < exact && exact - v < 4.0 * std::f64::consts::PI * chord * 1.5, "{v} {chord}");
+    assert!(
+        v < exact && exact - v < 4.0 * std::f64::consts::PI * chord * 1.5,
+        "{v} {chord}"
+    );
 }
 
 #[test]
@@ -305,7 +321,10 @@ fn pn_octahedron_closes_itself_and_grows_towards_the_sphere() {
     assert!(closed_oriented(&m));
     let vol = signed_volume(&m);
     // Between the octahedron (4/3) and the ball (4π/3).
-    assert!(vol > 4.0 / 3.0 + 0.5 && vol < 4.0 / 3.0 * std::f64::consts::PI, "{vol}");
+    assert!(
+        vol > 4.0 / 3.0 + 0.5 && vol < 4.0 / 3.0 * std::f64::consts::PI,
+        "{vol}"
+    );
 }
 
 #[test]

@@ -65,12 +65,12 @@ use solidkit_kernel::files::{DEFAULT_MAX_FILE_BYTES, read_regular_file};
 
 pub use atomic::{remove_temporary_files_and_exit, write_atomic};
 pub use error::{Location, MeshIoError};
+pub use ply_scalars::write_ply_with_scalars;
 pub use polygon::{PolygonError, newell_normal, triangulate_polygon};
 pub use polygon_mesh::{
     PolygonMesh, read_polygon_mesh, read_polygon_mesh_bytes, write_polygon_mesh,
     write_polygon_mesh_with,
 };
-pub use ply_scalars::write_ply_with_scalars;
 pub use resolver::FileMeshResolver;
 pub use stl::binary_records as stl_binary_records;
 pub use stored::{encode_mesh, stored_mesh};

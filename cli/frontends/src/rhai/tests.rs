@@ -161,7 +161,8 @@ const FAMILY_SAMPLES: [&str; 15] = [
     r#"{"type": "heightfield", "min": [0, 0], "max": [1, 1], "base": -0.5, "samples": [[1, 2], [1, 1]]}"#,
 ];
 
-/// Every family through `node(map)`: the samples above and the sweep and polyhedron fixtures.
+/// Every family through `node(map)`: the samples above and the sweep, polyhedron, tree and
+/// parametric surface fixtures.
 #[test]
 fn every_family_through_node_matches_json() {
     let fixtures = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../fixtures");
@@ -169,7 +170,7 @@ fn every_family_through_node_matches_json() {
         .iter()
         .map(|t| (t.to_string(), FileMeshResolver::new(&fixtures)))
         .collect();
-    for dir in ["sweeps", "polyhedra", "trees"] {
+    for dir in ["sweeps", "polyhedra", "trees", "surfaces"] {
         for entry in std::fs::read_dir(fixtures.join(dir)).expect("fixture folder") {
             let path = entry.expect("entry").path();
             if path.extension().is_some_and(|e| e == "json") {

@@ -7,29 +7,73 @@ use super::{Params, R, Value, find};
 use crate::patch::TriangleBezier;
 use crate::primitive::Primitive;
 use crate::surface::{
-    Closure, FormulaSurface, PnSource, Side, SurfaceError, SurfaceKind, SurfaceSpec,
-    TensorSurface, clamped_knots,
+    Closure, FormulaSurface, PnSource, Side, SurfaceError, SurfaceKind, SurfaceSpec, TensorSurface,
+    clamped_knots,
 };
 use glam::DVec3;
 
 /// The keys of each surface node: its own, then the closure keys every one has.
-const PATCH: [&str; 6] = ["points", "thickness", "side", "base", "tolerance", "segments"];
+const PATCH: [&str; 6] = [
+    "points",
+    "thickness",
+    "side",
+    "base",
+    "tolerance",
+    "segments",
+];
 const SPLINE: [&str; 9] = [
-    "degree", "points", "knots_u", "knots_v", "thickness", "side", "base", "tolerance",
+    "degree",
+    "points",
+    "knots_u",
+    "knots_v",
+    "thickness",
+    "side",
+    "base",
+    "tolerance",
     "segments",
 ];
 const NURBS: [&str; 10] = [
-    "degree", "points", "weights", "knots_u", "knots_v", "thickness", "side", "base",
-    "tolerance", "segments",
+    "degree",
+    "points",
+    "weights",
+    "knots_u",
+    "knots_v",
+    "thickness",
+    "side",
+    "base",
+    "tolerance",
+    "segments",
 ];
 const FORMULA: [&str; 10] = [
-    "x", "y", "z", "u", "v", "thickness", "side", "base", "tolerance", "segments",
+    "x",
+    "y",
+    "z",
+    "u",
+    "v",
+    "thickness",
+    "side",
+    "base",
+    "tolerance",
+    "segments",
 ];
 const TRIANGLE: [&str; 7] = [
-    "degree", "points", "thickness", "side", "base", "tolerance", "segments",
+    "degree",
+    "points",
+    "thickness",
+    "side",
+    "base",
+    "tolerance",
+    "segments",
 ];
 const PN: [&str; 9] = [
-    "path", "vertices", "normals", "triangles", "thickness", "side", "base", "tolerance",
+    "path",
+    "vertices",
+    "normals",
+    "triangles",
+    "thickness",
+    "side",
+    "base",
+    "tolerance",
     "segments",
 ];
 
@@ -61,9 +105,9 @@ impl Params<'_, '_> {
                 let s = TensorSurface::new(degrees, counts, points, weights, [ku, kv])
                     .map_err(|e| self.surface_error(e))?;
                 if ty == "nurbs_surface" {
-(SurfaceKind::Nurbs(s), &NURBS)
+                    (SurfaceKind::Nurbs(s), &NURBS)
                 } else {
-(SurfaceKind::BSpline(s), &SPLINE)
+                    (SurfaceKind::BSpline(s), &SPLINE)
                 }
             }
             "param_surface" => {
@@ -116,7 +160,7 @@ impl Params<'_, '_> {
                         triangles,
                     }
                 };
-(SurfaceKind::Pn(source), &PN)
+                (SurfaceKind::Pn(source), &PN)
             }
         };
         let spec = SurfaceSpec {
@@ -184,7 +228,7 @@ impl Params<'_, '_> {
     fn count(&self, key: &str) -> R<usize> {
         let i = self.at(key)?;
         let x = self.number_at(i, key)?;
-        if x >= 0.0 && x <= 1e6 && x.fract() == 0.0 {
+        if (0.0..=1e6).contains(&x) && x.fract() == 0.0 {
             Ok(x as usize)
         } else {
             Err(self.fail(i, key, "expected a whole number"))
@@ -201,7 +245,10 @@ impl Params<'_, '_> {
             }
             _ => {
                 let [p, q] = self.numbers::<2>(i, "degree")?;
-                if [p, q].iter().all(|x| *x >= 0.0 && *x <= 1e6 && x.fract() == 0.0) {
+                if [p, q]
+                    .iter()
+                    .all(|x| (0.0..=1e6).contains(x) && x.fract() == 0.0)
+                {
                     Ok([p as usize, q as usize])
                 } else {
                     Err(self.fail(i, "degree", "expected whole numbers"))
@@ -248,7 +295,11 @@ impl Params<'_, '_> {
         let at = self.at("weights")?;
         let rows = self.items(at, "weights")?;
         if rows.len() != counts[1] {
-            return Err(self.fail(at, "weights", "expected one row of weights per row of points"));
+            return Err(self.fail(
+                at,
+                "weights",
+                "expected one row of weights per row of points",
+            ));
         }
         let mut out = Vec::new();
         for (j, &r) in rows.iter().enumerate() {
