@@ -96,8 +96,8 @@ pub(crate) fn basis_derivatives(
         }
     }
     let mut factor = p as f64;
-    for k in 1..=n {
-        for d in ders[k].iter_mut() {
+    for (k, row) in ders.iter_mut().enumerate().take(n + 1).skip(1) {
+        for d in row.iter_mut() {
             *d *= factor;
         }
         factor *= (p - k) as f64;

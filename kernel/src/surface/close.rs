@@ -4,7 +4,7 @@
 
 use super::error::SurfaceError;
 use super::sample::Sampled;
-use super::{Closure, Side};
+use super::spec::{Closure, Side};
 use crate::IndexedMesh;
 use glam::DVec3;
 use std::collections::HashSet;

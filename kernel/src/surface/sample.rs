@@ -5,7 +5,7 @@
 //! edges, poles) are welded and the triangles they flatten dropped.
 
 use super::error::SurfaceError;
-use super::{PnSource, SurfaceKind, SurfaceSpec};
+use super::spec::{PnSource, SurfaceKind, SurfaceSpec};
 use crate::IndexedMesh;
 use crate::patch::{pn_refine, vertex_normals};
 use crate::primitive::{MeshResolver, MeshSolidError};

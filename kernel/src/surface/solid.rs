@@ -1,10 +1,10 @@
 //! A surface node as a CSG operand: its closed tessellation as a [`MeshSolid`] that keeps the
 //! node's description (so the JSON writer writes the node back as it was read).
 
-use super::SurfaceSpec;
 use super::close::close;
 use super::error::SurfaceError;
 use super::sample::{Sampled, sample};
+use super::spec::SurfaceSpec;
 use crate::IndexedMesh;
 use crate::primitive::{MeshResolver, MeshSolid, MeshSource};
 

@@ -186,9 +186,8 @@ impl TensorSurface {
         // Homogeneous sums A_{kl} = ∂^{k+l}/∂u^k∂v^l Σ N M w P and W_{kl} likewise.
         let mut a = [[DVec3::ZERO; 3]; 3];
         let mut w = [[0.0; 3]; 3];
-        for r in 0..=p {
-            for c in 0..=q {
-                let (i, j) = (su - p + r, sv - q + c);
+        for (r, i) in (su - p..=su).enumerate() {
+            for (c, j) in (sv - q..=sv).enumerate() {
                 let idx = j * nu + i;
                 let wt = self.weights.as_ref().map_or(1.0, |w| w[idx]);
                 let pw = self.points[idx] * wt;
