@@ -52,6 +52,7 @@ pub mod pipeline;
 pub mod refine;
 pub mod render;
 pub mod repair;
+pub mod simplify;
 pub mod sink;
 pub mod subdivision;
 #[cfg(feature = "suites")]

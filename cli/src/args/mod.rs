@@ -217,13 +217,24 @@ pub struct MeshArgs {
     /// Cells along the longest side of the meshing bounds (1 to 2048).
     #[arg(short, long, default_value_t = 128, value_parser = parse_resolution)]
     pub resolution: usize,
-    /// Polygonization method.
-    #[arg(long, value_enum, default_value_t = Method::Mc)]
-    pub method: Method,
+    /// Polygonization method (default: mc; dc with --target-error).
+    #[arg(long, value_enum)]
+    pub method: Option<Method>,
     /// Dual contouring only: collapse octree cells whose merged vertex stays within this
     /// distance (model units) of the surface planes it replaces, where the topology allows.
     #[arg(long, value_parser = parse_tolerance, allow_hyphen_values = true)]
     pub tolerance: Option<f64>,
+    /// Simplify the mesh by edge collapses that keep it closed, manifold, oriented, of the same
+    /// genus and free of self-intersections, within this distance (model units) of the mesh
+    /// before simplification, both ways.
+    #[arg(long, value_parser = parse_tolerance, allow_hyphen_values = true)]
+    pub simplify: Option<f64>,
+    /// Mesh within about this distance (model units) of the exact surface with as few triangles
+    /// as the checks allow: dual contouring on a grid of cells 2 × E wide along the longest side
+    /// (at most 2048 cells), simplified within E / 2 (see docs/small-meshes.md).
+    #[arg(long, value_parser = parse_tolerance, allow_hyphen_values = true,
+          conflicts_with_all = ["resolution", "tolerance", "simplify"])]
+    pub target_error: Option<f64>,
     /// Clip the solid to the box x0,y0,z0,x1,y1,z1 and mesh that (default: the solid's bounding
     /// box, unclipped). Needed for unbounded solids such as half-spaces.
     #[arg(long, value_parser = parse_bounds, allow_hyphen_values = true)]

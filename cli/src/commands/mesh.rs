@@ -28,10 +28,19 @@ pub fn run(a: &MeshArgs) -> Result<u8> {
         None => Domain::Solid,
     };
     let progress = MeshProgress::new(!a.no_progress);
-    let options = MeshOptions::new(a.resolution)
-        .method(a.method.into())
+    let method = a.method.unwrap_or(match a.target_error {
+        Some(_) => crate::args::Method::Dc,
+        None => crate::args::Method::Mc,
+    });
+    let (resolution, simplify) = match a.target_error {
+        Some(e) => (target_resolution(&solid, a.bounds, e), Some(e / 2.0)),
+        None => (a.resolution, a.simplify),
+    };
+    let options = MeshOptions::new(resolution)
+        .method(method.into())
         .domain(domain)
         .tolerance(a.tolerance)
+        .simplify(simplify)
         .refine(RefineOptions {
             max_factor: a.refine,
             budget_samples: a.refine_budget,
@@ -81,13 +90,19 @@ pub fn run(a: &MeshArgs) -> Result<u8> {
         let extra = [
             ("time_s", json!(time_s)),
             ("report_time_s", json!(report_s)),
-            ("resolution", json!(a.resolution)),
+            ("resolution", json!(resolution)),
             ("cells", json!(fine.cells)),
             ("refinement", json!(meshed.factor)),
             ("samples_total", json!(meshed.samples_total)),
             ("thin", json!(stats.thin)),
-            ("method", json!(a.method.name())),
+            ("method", json!(method.name())),
             ("tolerance", json!(a.tolerance)),
+            ("simplify", json!(simplify)),
+            ("target_error", json!(a.target_error)),
+            (
+                "simplify_collapses",
+                json!(meshed.simplified.map(|s| s.collapses)),
+            ),
             ("samples_evaluated", json!(stats.samples_evaluated)),
             ("program_length", json!(meshed.program_length)),
             ("warnings", json!(warnings)),
@@ -98,7 +113,7 @@ pub fn run(a: &MeshArgs) -> Result<u8> {
         let [x, y, z] = fine.cells;
         outln!(
             "resolution: {} ({x} x {y} x {z} cells of {:.6}{})",
-            a.resolution,
+            resolution,
             fine.cell,
             if meshed.factor > 1 {
                 format!(", refined {} times for thin features", meshed.factor)
@@ -117,6 +132,23 @@ pub fn run(a: &MeshArgs) -> Result<u8> {
         write_preview(mesh, path)?;
     }
     Ok(u8::from(meshed.lost_solid))
+}
+
+/// `--target-error E`: cells of about `2E` along the longest side of the meshing bounds (the
+/// solid's box, clipped by `--bounds`), 8 to 2048 of them.
+fn target_resolution(solid: &solidkit_kernel::Solid, bounds: Option<[f64; 6]>, e: f64) -> usize {
+    let mut b = solid.bbox();
+    if let Some(c) = bounds {
+        b = b.intersection(&Aabb::new(
+            DVec3::new(c[0], c[1], c[2]),
+            DVec3::new(c[3], c[4], c[5]),
+        ));
+    }
+    let longest = (b.max - b.min).max_element();
+    if !longest.is_finite() || longest <= 0.0 {
+        return 128;
+    }
+    ((longest / (2.0 * e)).ceil() as usize).clamp(8, 2048)
 }
 
 /// `--preview`: the mesh written, rasterised (iso view, 1024 x 1024).

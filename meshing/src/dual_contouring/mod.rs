@@ -41,7 +41,7 @@ mod crossing;
 mod emit;
 mod faces;
 mod patches;
-mod qef;
+pub(crate) mod qef;
 mod sources;
 
 use crate::IndexedMesh;

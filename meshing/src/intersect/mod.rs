@@ -30,7 +30,7 @@ mod morton;
 mod predicates;
 #[cfg(test)]
 mod reference;
-mod triangles;
+pub(crate) mod triangles;
 
 #[cfg(test)]
 mod tests;

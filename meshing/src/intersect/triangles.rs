@@ -35,7 +35,6 @@ pub(crate) struct Tri {
 impl Tri {
     /// The triangle, or `None` when it is exactly collinear (the search builds its triangles from
     /// projections it has already found).
-    #[cfg(test)]
     pub(crate) fn new(p: [DVec3; 3]) -> Option<Self> {
         Projection::of(p).map(|proj| Self { p, proj })
     }

@@ -32,6 +32,7 @@ use crate::dual_contouring::{DcOptions, mesh_dc};
 use crate::grid::GridSpec;
 use crate::octree::{MeshStats, mesh_sparse};
 use crate::refine::mesh_refined;
+use crate::simplify::{SimplifyOptions, SimplifyStats, simplify};
 use crate::{ReportOptions, TopologyReport};
 use solidkit_kernel::{Aabb, Program, Solid};
 
@@ -146,9 +147,24 @@ impl Prepared {
                 }),
             });
         }
+        let mut stats = refined.stats;
+        let (mesh, simplified) = match o.simplify {
+            Some(tolerance) => {
+                let options = SimplifyOptions {
+                    tolerance,
+                    spacing: refined.spec.cell,
+                };
+                let (mesh, s) = simplify(&refined.mesh, &options);
+                // The mesher's certificate was for its own triangles; the report tests these.
+                stats.intersection_free &= s.collapses == 0;
+                (mesh, Some(s))
+            }
+            None => (refined.mesh, None),
+        };
         Ok(Meshed {
-            mesh: refined.mesh,
-            stats: refined.stats,
+            mesh,
+            stats,
+            simplified,
             spec: refined.spec,
             factor: refined.factor,
             samples_total: refined.samples_total,
@@ -194,6 +210,8 @@ pub struct Meshed {
     pub warnings: Vec<String>,
     /// Instructions in the solid's compiled program.
     pub program_length: usize,
+    /// What the simplification pass did, when there was one.
+    pub simplified: Option<SimplifyStats>,
 }
 
 impl Meshed {

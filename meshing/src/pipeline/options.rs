@@ -55,6 +55,9 @@ pub struct MeshOptions {
     pub domain: Domain,
     /// Dual contouring's simplification tolerance (world units); only with [`Method::Dc`].
     pub tolerance: Option<f64>,
+    /// Simplify the mesh afterwards by edge collapses within this distance of it (world units;
+    /// [`crate::simplify`]), for either method.
+    pub simplify: Option<f64>,
     /// Limits of refinement for features thinner than a cell (`max_factor: 1` turns it off).
     pub refine: RefineOptions,
     /// Octree brick size, cancellation and progress.
@@ -78,6 +81,7 @@ impl MeshOptions {
             resolution,
             domain: Domain::Solid,
             tolerance: None,
+            simplify: None,
             refine: RefineOptions::default(),
             sparse: SparseOptions::default(),
             max_memory: None,
@@ -99,6 +103,12 @@ impl MeshOptions {
     /// With dual contouring's simplification tolerance.
     pub fn tolerance(mut self, tolerance: Option<f64>) -> Self {
         self.tolerance = tolerance;
+        self
+    }
+
+    /// With a simplification pass within `tolerance` of the mesh (None: none).
+    pub fn simplify(mut self, tolerance: Option<f64>) -> Self {
+        self.simplify = tolerance;
         self
     }
 

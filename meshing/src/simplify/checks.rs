@@ -1,0 +1,208 @@
+//! Whether a collapse is allowed: the triangles around the merged vertex keep their orientation
+//! and stay proper triangles, stay within the tolerance of the input mesh (sampled), every input
+//! vertex they answer for stays within the tolerance of them, and none meets another triangle
+//! beyond the vertices they share (exact predicates).
+
+use super::spatial::Spatial;
+use super::surface::{Star, Surface};
+use crate::intersect::triangles::{Tri, meet_beyond_shared};
+use glam::DVec3;
+use solidkit_kernel::bvh::TriangleBvh;
+use solidkit_kernel::closest::closest_point_on_triangle;
+
+/// Least cosine between a triangle's normal before and after a collapse.
+const MIN_NORMAL_COSINE: f64 = 0.2;
+
+/// Most subdivisions per edge when sampling a triangle against the input.
+const MAX_SUBDIVISIONS: usize = 16;
+
+/// What the checks read: the input mesh, its vertices (the witnesses) and the limits.
+pub(crate) struct Checker<'a> {
+    /// The input mesh's triangles.
+    pub reference: &'a TriangleBvh,
+    /// The input mesh's vertices.
+    pub witnesses: &'a [DVec3],
+    /// Largest distance allowed, both ways.
+    pub tolerance: f64,
+    /// Sample spacing on the new triangles (the input's cell size).
+    pub spacing: f64,
+}
+
+/// A collapse that passed: for every witness of the star's triangles, the new triangle that
+/// answers for it now.
+pub(crate) struct Passed {
+    /// `(witness, triangle)` pairs.
+    pub witnesses: Vec<(u32, u32)>,
+}
+
+impl Checker<'_> {
+    /// Checks the collapse of `star` with the merged vertex at `at`; `owned` lists the witnesses
+    /// of each triangle.
+    pub fn check(
+        &self,
+        s: &Surface,
+        star: &Star,
+        at: DVec3,
+        owned: &[Vec<u32>],
+        index: &Spatial,
+        scratch: &mut Vec<u32>,
+    ) -> Option<Passed> {
+        let new: Vec<([u32; 3], [DVec3; 3])> = star
+            .kept
+            .iter()
+            .map(|&t| {
+                let ids = s.after(star, t);
+                let p = ids.map(|v| {
+                    if v == star.into {
+                        at
+                    } else {
+                        s.positions[v as usize]
+                    }
+                });
+                (ids, p)
+            })
+            .collect();
+        if !self.shapes_hold(s, star, &new) {
+            return None;
+        }
+        if !new.iter().all(|(_, p)| self.near_input(p)) {
+            return None;
+        }
+        let witnesses = self.witnesses_covered(star, &new, owned)?;
+        if self.meets_others(star, &new, index, s, scratch) {
+            return None;
+        }
+        Some(Passed { witnesses })
+    }
+
+    /// Orientation kept, no degenerate triangle, no triangle twice.
+    fn shapes_hold(&self, s: &Surface, star: &Star, new: &[([u32; 3], [DVec3; 3])]) -> bool {
+        for (k, (ids, p)) in new.iter().enumerate() {
+            let n1 = (p[1] - p[0]).cross(p[2] - p[0]);
+            let longest = (p[1] - p[0])
+                .length_squared()
+                .max((p[2] - p[1]).length_squared())
+                .max((p[0] - p[2]).length_squared());
+            if !(n1.length_squared() > 1e-20 * longest * longest) {
+                return false;
+            }
+            let old = s.corners(star.kept[k]);
+            let n0 = (old[1] - old[0]).cross(old[2] - old[0]);
+            if n0.normalize_or_zero().dot(n1.normalize()) < MIN_NORMAL_COSINE {
+                return false;
+            }
+            let mut sorted = *ids;
+            sorted.sort_unstable();
+            for (other, _) in &new[..k] {
+                let mut o = *other;
+                o.sort_unstable();
+                if o == sorted {
+                    return false;
+                }
+            }
+        }
+        true
+    }
+
+    /// Samples of the triangle (corners, and a barycentric lattice about `spacing` apart) all
+    /// within the tolerance of the input.
+    fn near_input(&self, p: &[DVec3; 3]) -> bool {
+        let longest = (p[1] - p[0])
+            .length()
+            .max((p[2] - p[1]).length())
+            .max((p[0] - p[2]).length());
+        let n = ((longest / self.spacing).ceil() as usize).clamp(1, MAX_SUBDIVISIONS);
+        let limit = self.tolerance * self.tolerance;
+        for i in 0..=n {
+            for j in 0..=n - i {
+                let (u, v) = (i as f64 / n as f64, j as f64 / n as f64);
+                let q = p[0] + (p[1] - p[0]) * u + (p[2] - p[0]) * v;
+                match self.reference.nearest(q) {
+                    Some(near) if near.distance2 <= limit => {}
+                    _ => return false,
+                }
+            }
+        }
+        true
+    }
+
+    /// Every witness of the star's triangles within the tolerance of a new triangle; the nearest
+    /// one takes it over.
+    fn witnesses_covered(
+        &self,
+        star: &Star,
+        new: &[([u32; 3], [DVec3; 3])],
+        owned: &[Vec<u32>],
+    ) -> Option<Vec<(u32, u32)>> {
+        let limit = self.tolerance * self.tolerance;
+        let mut out = Vec::new();
+        for &t in star.removed.iter().chain(&star.kept) {
+            for &w in &owned[t as usize] {
+                let q = self.witnesses[w as usize];
+                let mut best = (f64::INFINITY, 0);
+                for (k, (_, p)) in new.iter().enumerate() {
+                    let d2 = closest_point_on_triangle(q, *p).distance_squared(q);
+                    if d2 < best.0 {
+                        best = (d2, k);
+                    }
+                }
+                if !(best.0 <= limit) {
+                    return None;
+                }
+                out.push((w, star.kept[best.1]));
+            }
+        }
+        Some(out)
+    }
+
+    /// Whether a new triangle meets another live triangle, or another new one, beyond what they
+    /// share.
+    fn meets_others(
+        &self,
+        star: &Star,
+        new: &[([u32; 3], [DVec3; 3])],
+        index: &Spatial,
+        s: &Surface,
+        scratch: &mut Vec<u32>,
+    ) -> bool {
+        let mut tris = Vec::with_capacity(new.len());
+        let mut lo = DVec3::INFINITY;
+        let mut hi = DVec3::NEG_INFINITY;
+        for (_, p) in new {
+            match Tri::new(*p) {
+                Some(t) => tris.push(t),
+                None => return true,
+            }
+            lo = lo.min(p[0]).min(p[1]).min(p[2]);
+            hi = hi.max(p[0]).max(p[1]).max(p[2]);
+        }
+        for (k, (ids, _)) in new.iter().enumerate() {
+            for (m, (other, _)) in new[..k].iter().enumerate() {
+                if meet_beyond_shared(*ids, &tris[k], *other, &tris[m]) {
+                    return true;
+                }
+            }
+        }
+        index.near(lo, hi, scratch);
+        for &c in scratch.iter() {
+            if star.kept.binary_search(&c).is_ok() || star.removed.contains(&c) {
+                continue;
+            }
+            let cp = s.corners(c);
+            let clo = cp[0].min(cp[1]).min(cp[2]);
+            let chi = cp[0].max(cp[1]).max(cp[2]);
+            let Some(ct) = Tri::new(cp) else { continue };
+            for (k, (ids, p)) in new.iter().enumerate() {
+                let plo = p[0].min(p[1]).min(p[2]);
+                let phi = p[0].max(p[1]).max(p[2]);
+                if plo.cmple(chi).all()
+                    && phi.cmpge(clo).all()
+                    && meet_beyond_shared(*ids, &tris[k], s.triangles[c as usize], &ct)
+                {
+                    return true;
+                }
+            }
+        }
+        false
+    }
+}

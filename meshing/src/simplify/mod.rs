@@ -1,0 +1,294 @@
+//! Mesh simplification within a distance tolerance: quadric-ordered edge collapses that keep a
+//! closed oriented 2-manifold closed, oriented, manifold, of the same genus and free of
+//! self-intersections, with the result within the tolerance of the input both ways.
+//!
+//! Each vertex carries the quadric (the [`Qef`](crate::dual_contouring) of dual contouring) of the
+//! planes of the input triangles around it; an edge's cost is the merged quadric's error at its
+//! minimiser, and edges collapse cheapest first (ties: the shorter edge, then the vertex ids, so
+//! the result is the same on every run and thread count: the pass is sequential). A collapse is
+//! made only when (`surface.rs`, `checks.rs`):
+//! - the link condition holds (the two vertices share exactly the two neighbours of the edge's
+//!   triangles): the surface stays a 2-manifold of the same genus;
+//! - every triangle around the merged vertex keeps its orientation (normal turned by less than
+//!   about 78°) and a non-zero area, and no triangle appears twice;
+//! - samples of every such triangle (its corners and a lattice about a cell apart, at most 16 per
+//!   edge) lie within the tolerance of the input mesh (exact nearest points on a BVH), and every
+//!   input vertex those triangles answered for lies within the tolerance of one of them (each
+//!   input vertex is answered for by exactly one live triangle): the two one-sided distances;
+//! - no such triangle meets another triangle beyond the vertices they share (the exact test of
+//!   [`crate::intersect`], against the triangles near it in a hierarchy of hashed grids,
+//!   `spatial.rs`).
+//!
+//! Candidate positions: the quadric's minimiser (clamped to the edge's box grown by the
+//! tolerance), then the two ends; the first that passes is taken. Flat regions collapse fully:
+//! a cube meshed by dual contouring ends at its 8 corners and 12 triangles.
+
+mod checks;
+mod spatial;
+mod surface;
+
+#[cfg(test)]
+mod tests;
+
+use crate::IndexedMesh;
+use crate::dual_contouring::qef::Qef;
+use checks::Checker;
+use glam::DVec3;
+use solidkit_kernel::bvh::TriangleBvh;
+use spatial::Spatial;
+use std::cmp::Reverse;
+use std::collections::{BinaryHeap, HashMap};
+use surface::Surface;
+
+/// Triangles per leaf of the input's BVH.
+const LEAF_SIZE: u32 = 4;
+
+/// Options of [`simplify`].
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct SimplifyOptions {
+    /// Largest distance between the result and the input, both ways (model units).
+    pub tolerance: f64,
+    /// Spacing of the samples taken on new triangles (model units; the input's cell size for a
+    /// mesh from a grid). At most 16 samples per edge are taken whatever the spacing.
+    pub spacing: f64,
+}
+
+/// What [`simplify`] did.
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub struct SimplifyStats {
+    /// Edges collapsed.
+    pub collapses: usize,
+    /// Collapses refused by a check.
+    pub refused: usize,
+    /// True when the input was returned unchanged because it is not a closed oriented
+    /// 2-manifold (or the tolerance is not positive).
+    pub skipped: bool,
+}
+
+/// The mesh simplified within `options.tolerance` of itself (see the [module docs](self)). The
+/// input must be a closed oriented 2-manifold without self-intersections for the guarantees to
+/// hold; any other input comes back unchanged (`skipped`).
+pub fn simplify(mesh: &IndexedMesh, options: &SimplifyOptions) -> (IndexedMesh, SimplifyStats) {
+    let mut stats = SimplifyStats::default();
+    let tolerance = options.tolerance;
+    let usable = tolerance > 0.0
+        && tolerance.is_finite()
+        && mesh.triangles.len() >= 4
+        && closed_oriented_manifold(mesh);
+    let corners: Vec<[DVec3; 3]> = (0..mesh.triangles.len())
+        .map(|t| mesh.triangle_positions(t))
+        .collect();
+    let reference = match TriangleBvh::new(corners, LEAF_SIZE) {
+        Ok(bvh) if usable => bvh,
+        _ => {
+            stats.skipped = true;
+            return (mesh.clone(), stats);
+        }
+    };
+    let spacing = if options.spacing > 0.0 && options.spacing.is_finite() {
+        options.spacing
+    } else {
+        tolerance
+    };
+    let checker = Checker {
+        reference: &reference,
+        witnesses: &mesh.positions,
+        tolerance,
+        spacing,
+    };
+    let mut run = Run::new(mesh, spacing);
+    run.collapse_all(&checker, tolerance, &mut stats);
+    (run.into_mesh(), stats)
+}
+
+/// A heap entry: cost, edge length², the edge, and the stamps of its ends when it was pushed.
+type Entry = Reverse<(u64, u64, u32, u32, u32, u32)>;
+
+/// The state of one simplification.
+struct Run {
+    surface: Surface,
+    quadrics: Vec<Qef>,
+    stamps: Vec<u32>,
+    owned: Vec<Vec<u32>>,
+    index: Spatial,
+    heap: BinaryHeap<Entry>,
+    live_vertices: usize,
+}
+
+impl Run {
+    fn new(mesh: &IndexedMesh, spacing: f64) -> Self {
+        let surface = Surface::new(mesh.positions.clone(), mesh.triangles.clone());
+        let mut quadrics: Vec<Qef> = mesh.positions.iter().map(|&p| Qef::new(p)).collect();
+        let mut index = Spatial::new(spacing, mesh.triangles.len());
+        let mut owned = vec![Vec::new(); mesh.triangles.len()];
+        let mut witnessed = vec![false; mesh.positions.len()];
+        for (t, tri) in mesh.triangles.iter().enumerate() {
+            let p = mesh.triangle_positions(t);
+            let n = (p[1] - p[0]).cross(p[2] - p[0]).normalize_or_zero();
+            let centre = (p[0] + p[1] + p[2]) / 3.0;
+            for &v in tri {
+                if n != DVec3::ZERO {
+                    quadrics[v as usize].add(centre, n);
+                }
+                if !std::mem::replace(&mut witnessed[v as usize], true) {
+                    owned[t].push(v);
+                }
+            }
+            index.insert(t as u32, p);
+        }
+        let live_vertices = witnessed.iter().filter(|&&w| w).count();
+        let mut run = Self {
+            surface,
+            quadrics,
+            stamps: vec![0; mesh.positions.len()],
+            owned,
+            index,
+            heap: BinaryHeap::new(),
+            live_vertices,
+        };
+        for tri in &mesh.triangles {
+            for k in 0..3 {
+                let (a, b) = (tri[k], tri[(k + 1) % 3]);
+                if a < b {
+                    run.push(a, b);
+                }
+            }
+        }
+        run
+    }
+
+    /// The merged quadric of an edge and its minimiser.
+    fn merged(&self, a: u32, b: u32, tolerance: f64) -> (Qef, DVec3) {
+        let (pa, pb) = (
+            self.surface.positions[a as usize],
+            self.surface.positions[b as usize],
+        );
+        let mut q = self.quadrics[b as usize];
+        q.merge(&self.quadrics[a as usize]);
+        let grow = DVec3::splat(tolerance.max(0.0));
+        let (x, _) = q.solve(pa.min(pb) - grow, pa.max(pb) + grow);
+        (q, x)
+    }
+
+    fn push(&mut self, a: u32, b: u32) {
+        let (a, b) = (a.min(b), a.max(b));
+        // Ordering only: the tolerance clamp does not change the order much.
+        let (q, x) = self.merged(a, b, 0.0);
+        let cost = q.error(x);
+        let len = self.surface.positions[a as usize].distance_squared(self.surface.positions[b as usize]);
+        self.heap.push(Reverse((
+            cost.to_bits(),
+            len.to_bits(),
+            a,
+            b,
+            self.stamps[a as usize],
+            self.stamps[b as usize],
+        )));
+    }
+
+    fn collapse_all(&mut self, checker: &Checker, tolerance: f64, stats: &mut SimplifyStats) {
+        let mut scratch = Vec::new();
+        while let Some(Reverse((_, _, a, b, sa, sb))) = self.heap.pop() {
+            if self.stamps[a as usize] != sa
+                || self.stamps[b as usize] != sb
+                || self.surface.around[a as usize].is_empty()
+                || self.surface.around[b as usize].is_empty()
+                || self.live_vertices <= 4
+            {
+                continue;
+            }
+            let Some(star) = self.surface.star(b, a) else {
+                continue;
+            };
+            let (q, x) = self.merged(a, b, tolerance);
+            // Quick refusal: some plane of the merged clusters is farther than the tolerance.
+            if q.error(x) > q.count as f64 * tolerance * tolerance {
+                stats.refused += 1;
+                continue;
+            }
+            let pa = self.surface.positions[a as usize];
+            let pb = self.surface.positions[b as usize];
+            let mut candidates = [x, pa, pb];
+            candidates[1..].sort_by(|u, v| q.error(*u).total_cmp(&q.error(*v)));
+            let passed = candidates.iter().find_map(|&at| {
+                checker
+                    .check(
+                        &self.surface,
+                        &star,
+                        at,
+                        &self.owned,
+                        &self.index,
+                        &mut scratch,
+                    )
+                    .map(|p| (at, p))
+            });
+            let Some((at, passed)) = passed else {
+                stats.refused += 1;
+                continue;
+            };
+            for &t in star.removed.iter().chain(&star.kept) {
+                self.index.remove(t);
+                self.owned[t as usize].clear();
+            }
+            self.surface.collapse(&star, at);
+            for &t in &star.kept {
+                self.index.insert(t, self.surface.corners(t));
+            }
+            for (w, t) in passed.witnesses {
+                self.owned[t as usize].push(w);
+            }
+            self.quadrics[a as usize] = q;
+            self.live_vertices -= 1;
+            stats.collapses += 1;
+            let link = self.surface.neighbours(a);
+            self.stamps[a as usize] += 1;
+            for &w in &link {
+                self.stamps[w as usize] += 1;
+            }
+            for &w in &link {
+                for v in self.surface.neighbours(w) {
+                    self.push(w, v);
+                }
+            }
+        }
+    }
+
+    /// The live vertices (in id order) and triangles (in id order).
+    fn into_mesh(self) -> IndexedMesh {
+        let s = self.surface;
+        let mut ids = vec![u32::MAX; s.positions.len()];
+        let mut positions = Vec::new();
+        for (v, around) in s.around.iter().enumerate() {
+            if !around.is_empty() {
+                ids[v] = positions.len() as u32;
+                positions.push(s.positions[v]);
+            }
+        }
+        let triangles = s
+            .triangles
+            .iter()
+            .zip(&s.alive)
+            .filter(|(_, alive)| **alive)
+            .map(|(t, _)| t.map(|v| ids[v as usize]))
+            .collect();
+        IndexedMesh::new(positions, triangles)
+    }
+}
+
+/// True when every directed edge appears once and its reverse once (closed, oriented, manifold
+/// along edges) and no triangle repeats a vertex.
+fn closed_oriented_manifold(mesh: &IndexedMesh) -> bool {
+    let n = mesh.positions.len();
+    let mut edges: HashMap<(u32, u32), u32> = HashMap::with_capacity(mesh.triangles.len() * 3);
+    for tri in &mesh.triangles {
+        if !crate::intersect::is_usable(tri, n) {
+            return false;
+        }
+        for k in 0..3 {
+            *edges.entry((tri[k], tri[(k + 1) % 3])).or_default() += 1;
+        }
+    }
+    edges
+        .iter()
+        .all(|(&(a, b), &c)| c == 1 && edges.get(&(b, a)) == Some(&1))
+}
