@@ -225,15 +225,16 @@ pub struct MeshArgs {
     #[arg(long, value_parser = parse_tolerance, allow_hyphen_values = true)]
     pub tolerance: Option<f64>,
     /// Simplify the mesh by edge collapses that keep it closed, manifold, oriented, of the same
-    /// genus and free of self-intersections, within this distance (model units) of the mesh
-    /// before simplification, both ways.
+    /// genus and free of self-intersections, with every point within this distance (model units)
+    /// of the exact surface and the exact surface within it of the mesh (see
+    /// docs/small-meshes.md); either method.
     #[arg(long, value_parser = parse_tolerance, allow_hyphen_values = true)]
     pub simplify: Option<f64>,
-    /// Mesh within about this distance (model units) of the exact surface with as few triangles
-    /// as the checks allow: dual contouring on a grid of cells 2 × E wide along the longest side
-    /// (at most 2048 cells), simplified within E / 2 (see docs/small-meshes.md).
+    /// The mesh within this distance (model units) of the exact surface, with as few triangles
+    /// as the checks allow: dual contouring (sharp edges and corners kept) then `--simplify E`.
+    /// The resolution still decides which features are found.
     #[arg(long, value_parser = parse_tolerance, allow_hyphen_values = true,
-          conflicts_with_all = ["resolution", "tolerance", "simplify"])]
+          conflicts_with_all = ["tolerance", "simplify"])]
     pub target_error: Option<f64>,
     /// Clip the solid to the box x0,y0,z0,x1,y1,z1 and mesh that (default: the solid's bounding
     /// box, unclipped). Needed for unbounded solids such as half-spaces.

@@ -33,7 +33,7 @@ pub fn run(a: &MeshArgs) -> Result<u8> {
         None => crate::args::Method::Mc,
     });
     let (resolution, simplify) = match a.target_error {
-        Some(e) => (target_resolution(&solid, a.bounds, e), Some(e / 2.0)),
+        Some(e) => (a.resolution, Some(e)),
         None => (a.resolution, a.simplify),
     };
     let options = MeshOptions::new(resolution)
@@ -132,23 +132,6 @@ pub fn run(a: &MeshArgs) -> Result<u8> {
         write_preview(mesh, path)?;
     }
     Ok(u8::from(meshed.lost_solid))
-}
-
-/// `--target-error E`: cells of about `2E` along the longest side of the meshing bounds (the
-/// solid's box, clipped by `--bounds`), 8 to 2048 of them.
-fn target_resolution(solid: &solidkit_kernel::Solid, bounds: Option<[f64; 6]>, e: f64) -> usize {
-    let mut b = solid.bbox();
-    if let Some(c) = bounds {
-        b = b.intersection(&Aabb::new(
-            DVec3::new(c[0], c[1], c[2]),
-            DVec3::new(c[3], c[4], c[5]),
-        ));
-    }
-    let longest = (b.max - b.min).max_element();
-    if !longest.is_finite() || longest <= 0.0 {
-        return 128;
-    }
-    ((longest / (2.0 * e)).ceil() as usize).clamp(8, 2048)
 }
 
 /// `--preview`: the mesh written, rasterised (iso view, 1024 x 1024).

@@ -154,7 +154,7 @@ impl Prepared {
                     tolerance,
                     spacing: refined.spec.cell,
                 };
-                let (mesh, s) = simplify(&refined.mesh, &options);
+                let (mesh, s) = simplify(&refined.mesh, &self.program, &options);
                 // The mesher's certificate was for its own triangles; the report tests these.
                 stats.intersection_free &= s.collapses == 0;
                 (mesh, Some(s))

@@ -7,20 +7,26 @@ use super::spatial::Spatial;
 use super::surface::{Star, Surface};
 use crate::intersect::triangles::{Tri, meet_beyond_shared};
 use glam::DVec3;
-use solidkit_kernel::bvh::TriangleBvh;
 use solidkit_kernel::closest::closest_point_on_triangle;
 
 /// Least cosine between a triangle's normal before and after a collapse.
 const MIN_NORMAL_COSINE: f64 = 0.2;
 
+/// Least cosine between a new triangle's normal and the field's gradient at its centre, when it
+/// turned away from its old normal.
+const SURFACE_NORMAL_COSINE: f64 = 0.7;
+
 /// Most subdivisions per edge when sampling a triangle against the input.
 const MAX_SUBDIVISIONS: usize = 16;
 
-/// What the checks read: the input mesh, its vertices (the witnesses) and the limits.
+/// What the checks read: the field, the witnesses (the input's vertices moved onto the zero
+/// set) and the limits.
 pub(crate) struct Checker<'a> {
-    /// The input mesh's triangles.
-    pub reference: &'a TriangleBvh,
-    /// The input mesh's vertices.
+    /// The field's value at a point (a distance bound: Lipschitz constant at most 1).
+    pub field: &'a dyn Fn(DVec3) -> f64,
+    /// The field's gradient at a point.
+    pub gradient: &'a dyn Fn(DVec3) -> DVec3,
+    /// Points of the surface the result must pass near.
     pub witnesses: &'a [DVec3],
     /// Largest distance allowed, both ways.
     pub tolerance: f64,
@@ -62,16 +68,13 @@ impl Checker<'_> {
                 (ids, p)
             })
             .collect();
-        if !self.shapes_hold(s, star, &new) {
+        if !self.shapes_hold(s, star, &new) || !new.iter().all(|(_, p)| self.near_input(p, at)) {
             return None;
         }
-        if !new.iter().all(|(_, p)| self.near_input(p)) {
-            return None;
-        }
-        let witnesses = self.witnesses_covered(star, &new, owned)?;
         if self.meets_others(star, &new, index, s, scratch) {
             return None;
         }
+        let witnesses = self.witnesses_covered(star, &new, owned)?;
         Some(Passed { witnesses })
     }
 
@@ -88,8 +91,14 @@ impl Checker<'_> {
             }
             let old = s.corners(star.kept[k]);
             let n0 = (old[1] - old[0]).cross(old[2] - old[0]);
-            if n0.normalize_or_zero().dot(n1.normalize()) < MIN_NORMAL_COSINE {
-                return false;
+            let n1 = n1.normalize();
+            if n0.normalize_or_zero().dot(n1) < MIN_NORMAL_COSINE {
+                // A turn away from a badly placed input triangle is fine when the new one faces
+                // the way the surface does.
+                let g = (self.gradient)((p[0] + p[1] + p[2]) / 3.0).normalize_or_zero();
+                if g.dot(n1) < SURFACE_NORMAL_COSINE {
+                    return false;
+                }
             }
             let mut sorted = *ids;
             sorted.sort_unstable();
@@ -104,22 +113,32 @@ impl Checker<'_> {
         true
     }
 
-    /// Samples of the triangle (corners, and a barycentric lattice about `spacing` apart) all
-    /// within the tolerance of the input.
-    fn near_input(&self, p: &[DVec3; 3]) -> bool {
+    /// Samples of the triangle (the merged vertex `at`, and a barycentric lattice about
+    /// `spacing` apart) all with field values within the tolerance, where a corner already
+    /// farther out (an input vertex off the surface) raises the bound near it by its excess.
+    fn near_input(&self, p: &[DVec3; 3], at: DVec3) -> bool {
         let longest = (p[1] - p[0])
             .length()
             .max((p[2] - p[1]).length())
             .max((p[0] - p[2]).length());
         let n = ((longest / self.spacing).ceil() as usize).clamp(1, MAX_SUBDIVISIONS);
-        let limit = self.tolerance * self.tolerance;
+        let excess = p.map(|c| {
+            if c == at {
+                0.0
+            } else {
+                ((self.field)(c).abs() - self.tolerance).max(0.0)
+            }
+        });
         for i in 0..=n {
             for j in 0..=n - i {
                 let (u, v) = (i as f64 / n as f64, j as f64 / n as f64);
                 let q = p[0] + (p[1] - p[0]) * u + (p[2] - p[0]) * v;
-                match self.reference.nearest(q) {
-                    Some(near) if near.distance2 <= limit => {}
-                    _ => return false,
+                let bound = self.tolerance
+                    + excess[0] * (1.0 - u - v).max(0.0)
+                    + excess[1] * u
+                    + excess[2] * v;
+                if !((self.field)(q).abs() <= bound) {
+                    return false;
                 }
             }
         }

@@ -34,14 +34,15 @@ use crate::IndexedMesh;
 use crate::dual_contouring::qef::Qef;
 use checks::Checker;
 use glam::DVec3;
-use solidkit_kernel::bvh::TriangleBvh;
+use solidkit_kernel::Evaluator;
 use spatial::Spatial;
+use std::cell::RefCell;
 use std::cmp::Reverse;
 use std::collections::{BinaryHeap, HashMap};
 use surface::Surface;
 
-/// Triangles per leaf of the input's BVH.
-const LEAF_SIZE: u32 = 4;
+/// Newton steps moving each input vertex onto the zero set (its witness).
+const PROJECTION_STEPS: usize = 4;
 
 /// Options of [`simplify`].
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -65,40 +66,79 @@ pub struct SimplifyStats {
     pub skipped: bool,
 }
 
-/// The mesh simplified within `options.tolerance` of itself (see the [module docs](self)). The
-/// input must be a closed oriented 2-manifold without self-intersections for the guarantees to
-/// hold; any other input comes back unchanged (`skipped`).
-pub fn simplify(mesh: &IndexedMesh, options: &SimplifyOptions) -> (IndexedMesh, SimplifyStats) {
+/// The mesh of the zero set of `field` simplified within `options.tolerance` of that zero set
+/// (see the [module docs](self)). The input must be a closed oriented 2-manifold without
+/// self-intersections for the guarantees to hold; any other input comes back unchanged
+/// (`skipped`). `field` must be a distance bound (Lipschitz constant at most 1), as every
+/// [`Program`](solidkit_kernel::Program) is.
+pub fn simplify<E: Evaluator>(
+    mesh: &IndexedMesh,
+    field: &E,
+    options: &SimplifyOptions,
+) -> (IndexedMesh, SimplifyStats) {
     let mut stats = SimplifyStats::default();
     let tolerance = options.tolerance;
     let usable = tolerance > 0.0
         && tolerance.is_finite()
         && mesh.triangles.len() >= 4
         && closed_oriented_manifold(mesh);
-    let corners: Vec<[DVec3; 3]> = (0..mesh.triangles.len())
-        .map(|t| mesh.triangle_positions(t))
-        .collect();
-    let reference = match TriangleBvh::new(corners, LEAF_SIZE) {
-        Ok(bvh) if usable => bvh,
-        _ => {
-            stats.skipped = true;
-            return (mesh.clone(), stats);
-        }
-    };
+    if !usable {
+        stats.skipped = true;
+        return (mesh.clone(), stats);
+    }
     let spacing = if options.spacing > 0.0 && options.spacing.is_finite() {
         options.spacing
     } else {
         tolerance
     };
+    let scratch = RefCell::new(E::PointScratch::default());
+    let value = |p: DVec3| field.value_with(p, &mut scratch.borrow_mut());
+    let gradient_scratch = RefCell::new(E::GradientScratch::default());
+    let gradient = |p: DVec3| {
+        let (mut v, mut g) = ([0.0], [DVec3::ZERO]);
+        field.values_gradients(&[p], &mut v, &mut g, &mut gradient_scratch.borrow_mut());
+        g[0]
+    };
+    let witnesses = project(field, &mesh.positions, tolerance);
     let checker = Checker {
-        reference: &reference,
-        witnesses: &mesh.positions,
+        field: &value,
+        gradient: &gradient,
+        witnesses: &witnesses,
         tolerance,
         spacing,
     };
     let mut run = Run::new(mesh, spacing);
     run.collapse_all(&checker, tolerance, &mut stats);
     (run.into_mesh(), stats)
+}
+
+/// The points moved onto the zero set by Newton steps along the gradient; a point whose steps
+/// do not settle within a thousandth of the tolerance stays where it was.
+fn project<E: Evaluator>(field: &E, points: &[DVec3], tolerance: f64) -> Vec<DVec3> {
+    let mut out = points.to_vec();
+    let mut scratch = E::GradientScratch::default();
+    let mut values = vec![0.0; 1024];
+    let mut gradients = vec![DVec3::ZERO; 1024];
+    for chunk in out.chunks_mut(1024) {
+        let original = chunk.to_vec();
+        let n = chunk.len();
+        for _ in 0..PROJECTION_STEPS {
+            field.values_gradients(chunk, &mut values[..n], &mut gradients[..n], &mut scratch);
+            for ((p, &f), g) in chunk.iter_mut().zip(&values).zip(&gradients) {
+                let g2 = g.length_squared();
+                if g2 > 1e-12 && f.is_finite() {
+                    *p -= *g * (f / g2);
+                }
+            }
+        }
+        field.values_gradients(chunk, &mut values[..n], &mut gradients[..n], &mut scratch);
+        for ((p, &f), o) in chunk.iter_mut().zip(&values).zip(original) {
+            if !(f.abs() <= 1e-3 * tolerance && p.distance(o) <= tolerance) {
+                *p = o;
+            }
+        }
+    }
+    out
 }
 
 /// A heap entry: cost, edge length², the edge, and the stamps of its ends when it was pushed.
@@ -109,6 +149,8 @@ struct Run {
     surface: Surface,
     quadrics: Vec<Qef>,
     stamps: Vec<u32>,
+    /// Vertices with an edge refused since their edges were last queued.
+    refused: Vec<bool>,
     owned: Vec<Vec<u32>>,
     index: Spatial,
     heap: BinaryHeap<Entry>,
@@ -141,6 +183,7 @@ impl Run {
             surface,
             quadrics,
             stamps: vec![0; mesh.positions.len()],
+            refused: vec![false; mesh.positions.len()],
             owned,
             index,
             heap: BinaryHeap::new(),
@@ -198,11 +241,13 @@ impl Run {
                 continue;
             }
             let Some(star) = self.surface.star(b, a) else {
+                self.refuse(a, b);
                 continue;
             };
             let (q, x) = self.merged(a, b, tolerance);
             // Quick refusal: some plane of the merged clusters is farther than the tolerance.
             if q.error(x) > q.count as f64 * tolerance * tolerance {
+                self.refuse(a, b);
                 stats.refused += 1;
                 continue;
             }
@@ -223,6 +268,7 @@ impl Run {
                     .map(|p| (at, p))
             });
             let Some((at, passed)) = passed else {
+                self.refuse(a, b);
                 stats.refused += 1;
                 continue;
             };
@@ -240,17 +286,35 @@ impl Run {
             self.quadrics[a as usize] = q;
             self.live_vertices -= 1;
             stats.collapses += 1;
+            // The merged vertex's edges are queued again; so are those of its neighbours that
+            // had an edge refused (the collapse changed their surroundings).
             let link = self.surface.neighbours(a);
             self.stamps[a as usize] += 1;
-            for &w in &link {
+            let retry: Vec<u32> = link
+                .iter()
+                .copied()
+                .filter(|&w| std::mem::take(&mut self.refused[w as usize]))
+                .collect();
+            for &w in &retry {
                 self.stamps[w as usize] += 1;
             }
             for &w in &link {
+                self.push(a, w);
+            }
+            for &w in &retry {
                 for v in self.surface.neighbours(w) {
-                    self.push(w, v);
+                    if v != a {
+                        self.push(w, v);
+                    }
                 }
             }
         }
+    }
+
+    /// Marks both ends of a refused edge.
+    fn refuse(&mut self, a: u32, b: u32) {
+        self.refused[a as usize] = true;
+        self.refused[b as usize] = true;
     }
 
     /// The live vertices (in id order) and triangles (in id order).
