@@ -86,7 +86,11 @@ impl Checker<'_> {
                 .length_squared()
                 .max((p[2] - p[1]).length_squared())
                 .max((p[0] - p[2]).length_squared());
-            if !(n1.length_squared() > 1e-20 * longest * longest) {
+            if n1
+                .length_squared()
+                .partial_cmp(&(1e-20 * longest * longest))
+                != Some(std::cmp::Ordering::Greater)
+            {
                 return false;
             }
             let old = s.corners(star.kept[k]);
@@ -137,7 +141,8 @@ impl Checker<'_> {
                     + excess[0] * (1.0 - u - v).max(0.0)
                     + excess[1] * u
                     + excess[2] * v;
-                if !((self.field)(q).abs() <= bound) {
+                let f = (self.field)(q).abs();
+                if f.is_nan() || f > bound {
                     return false;
                 }
             }
@@ -165,7 +170,7 @@ impl Checker<'_> {
                         best = (d2, k);
                     }
                 }
-                if !(best.0 <= limit) {
+                if best.0.is_nan() || best.0 > limit {
                     return None;
                 }
                 out.push((w, star.kept[best.1]));

@@ -1,20 +1,24 @@
-//! Mesh simplification within a distance tolerance: quadric-ordered edge collapses that keep a
-//! closed oriented 2-manifold closed, oriented, manifold, of the same genus and free of
-//! self-intersections, with the result within the tolerance of the input both ways.
+//! Mesh simplification within a distance tolerance of the exact surface: quadric-ordered edge
+//! collapses that keep a closed oriented 2-manifold closed, oriented, manifold, of the same genus
+//! and free of self-intersections.
 //!
-//! Each vertex carries the quadric (the [`Qef`](crate::dual_contouring) of dual contouring) of the
-//! planes of the input triangles around it; an edge's cost is the merged quadric's error at its
-//! minimiser, and edges collapse cheapest first (ties: the shorter edge, then the vertex ids, so
-//! the result is the same on every run and thread count: the pass is sequential). A collapse is
-//! made only when (`surface.rs`, `checks.rs`):
+//! Each vertex carries the quadric (the `Qef` of dual contouring) of the planes of the input
+//! triangles around it; an edge's cost is the merged quadric's error at its minimiser, and edges
+//! collapse cheapest first (ties: the shorter edge, then the vertex ids, so the result is the
+//! same on every run and thread count: the pass is sequential). A collapse is made only when
+//! (`surface.rs`, `checks.rs`):
 //! - the link condition holds (the two vertices share exactly the two neighbours of the edge's
 //!   triangles): the surface stays a 2-manifold of the same genus;
-//! - every triangle around the merged vertex keeps its orientation (normal turned by less than
-//!   about 78°) and a non-zero area, and no triangle appears twice;
-//! - samples of every such triangle (its corners and a lattice about a cell apart, at most 16 per
-//!   edge) lie within the tolerance of the input mesh (exact nearest points on a BVH), and every
-//!   input vertex those triangles answered for lies within the tolerance of one of them (each
-//!   input vertex is answered for by exactly one live triangle): the two one-sided distances;
+//! - every triangle around the merged vertex keeps a non-zero area and its orientation (normal
+//!   turned by less than about 78°, or facing within about 45° of the field's gradient), and no
+//!   triangle appears twice;
+//! - the field (a distance bound) is within the tolerance at the merged vertex and at a lattice
+//!   of samples about a cell apart (at most 16 per edge) on every such triangle, where a corner
+//!   the input left farther out raises the bound near it by its excess (so the pass never makes
+//!   the input worse and can remove such vertices);
+//! - every witness those triangles answered for lies within the tolerance of one of them: the
+//!   witnesses are the input's vertices moved onto the zero set by Newton steps, each answered
+//!   for by exactly one live triangle (the distance from the surface back to the mesh);
 //! - no such triangle meets another triangle beyond the vertices they share (the exact test of
 //!   [`crate::intersect`], against the triangles near it in a hierarchy of hashed grids,
 //!   `spatial.rs`).
@@ -47,7 +51,7 @@ const PROJECTION_STEPS: usize = 4;
 /// Options of [`simplify`].
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct SimplifyOptions {
-    /// Largest distance between the result and the input, both ways (model units).
+    /// Largest distance between the result and the zero set, both ways (model units).
     pub tolerance: f64,
     /// Spacing of the samples taken on new triangles (model units; the input's cell size for a
     /// mesh from a grid). At most 16 samples per edge are taken whatever the spacing.
@@ -218,7 +222,8 @@ impl Run {
         // Ordering only: the tolerance clamp does not change the order much.
         let (q, x) = self.merged(a, b, 0.0);
         let cost = q.error(x);
-        let len = self.surface.positions[a as usize].distance_squared(self.surface.positions[b as usize]);
+        let len =
+            self.surface.positions[a as usize].distance_squared(self.surface.positions[b as usize]);
         self.heap.push(Reverse((
             cost.to_bits(),
             len.to_bits(),

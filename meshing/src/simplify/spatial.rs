@@ -15,7 +15,7 @@ type Key = [i64; 3];
 pub(crate) struct Spatial {
     base: f64,
     levels: Vec<HashMap<Key, Vec<u32>>>,
-    /// Where each triangle is filed: its level and first cell (its cells follow from its box).
+    /// Where each triangle is filed: its level and box (its cells follow from the box).
     filed: Vec<Option<(usize, [DVec3; 2])>>,
 }
 
@@ -23,7 +23,11 @@ impl Spatial {
     /// An empty index over `triangles` ids, finest cells of size `base`.
     pub fn new(base: f64, triangles: usize) -> Self {
         Self {
-            base: if base > 0.0 && base.is_finite() { base } else { 1.0 },
+            base: if base > 0.0 && base.is_finite() {
+                base
+            } else {
+                1.0
+            },
             levels: (0..LEVELS).map(|_| HashMap::new()).collect(),
             filed: vec![None; triangles],
         }
@@ -91,9 +95,7 @@ impl Spatial {
                 continue;
             }
             let (a, b) = self.range(level, lo, hi);
-            let cells = (0..3)
-                .map(|k| (b[k] - a[k] + 1) as f64)
-                .product::<f64>();
+            let cells = (0..3).map(|k| (b[k] - a[k] + 1) as f64).product::<f64>();
             let mut take = |list: &Vec<u32>| {
                 for &t in list {
                     if let Some((_, [tlo, thi])) = self.filed[t as usize]

@@ -78,7 +78,9 @@ impl Surface {
             .iter()
             .map(|&t| {
                 let tri = self.triangles[t as usize];
-                tri.into_iter().find(|&w| w != from && w != into).unwrap_or(from)
+                tri.into_iter()
+                    .find(|&w| w != from && w != into)
+                    .unwrap_or(from)
             })
             .collect();
         if opposite[0] == opposite[1] {
