@@ -353,6 +353,52 @@ fn mesh_with_dual_contouring_and_tolerance() {
     }
 }
 
+/// `--target-error` (dual contouring, then `--simplify`) meshes a box in at most 48 triangles
+/// with the topology kept and self-intersections tested; `--simplify` works after marching cubes
+/// too; a non-positive error, or one beside `--tolerance`, is an error with exit code 2.
+#[test]
+fn mesh_with_target_error_and_simplify() {
+    let dir = tempfile::tempdir().unwrap();
+    let tree = dir.path().join("box.json");
+    std::fs::write(
+        &tree,
+        r#"{"format": "solidkit-tree", "version": 1, "root": {"type": "box", "size": [1, 2, 0.5]}}"#,
+    )
+    .unwrap();
+    let run = |extra: &[&str]| {
+        let mut args = vec!["mesh", path_str(&tree), "--resolution", "24", "--json"];
+        args.extend_from_slice(extra);
+        solidkit(&args)
+    };
+    let small = run(&["--target-error", "0.001"]);
+    assert_eq!(
+        small.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&small.stderr)
+    );
+    let small = stdout_json(&small);
+    assert_eq!(small["method"], "dc");
+    assert!(small["faces"].as_u64().unwrap() <= 48, "{small}");
+    assert_eq!(small["genus"].as_i64(), Some(0));
+    assert_eq!(small["closed"].as_bool(), Some(true));
+    assert_eq!(small["self_intersections"].as_u64(), Some(0));
+    assert_eq!(small["self_intersections_method"], "tested");
+    let volume = small["volume"].as_f64().unwrap();
+    assert!((volume - 1.0).abs() < 0.01, "{volume}");
+    let mc = stdout_json(&run(&[]));
+    let mc_small = stdout_json(&run(&["--simplify", "0.01"]));
+    assert!(mc_small["faces"].as_u64() < mc["faces"].as_u64());
+    assert_eq!(mc_small["manifold"].as_bool(), Some(true));
+    for bad in [
+        &["--target-error", "0"][..],
+        &["--target-error", "0.01", "--tolerance", "0.01"],
+    ] {
+        let o = run(bad);
+        assert_eq!(o.status.code(), Some(2), "{bad:?}");
+    }
+}
+
 /// `bench` runs each case in a child process per method and reports both, with their checks.
 #[test]
 fn bench_runs_both_methods_in_child_processes() {
