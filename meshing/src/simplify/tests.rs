@@ -7,8 +7,8 @@ use crate::IndexedMesh;
 use crate::TopologyReport;
 use crate::pipeline::{MeshOptions, Method, mesh_solid};
 use glam::{DQuat, DVec3};
-use solidkit_kernel::closest::closest_point_on_triangle;
 use solidkit_kernel::Solid;
+use solidkit_kernel::closest::closest_point_on_triangle;
 
 /// Dual contouring of `solid` at `resolution`, then simplified within `tolerance`.
 fn dc_then_simplify(
