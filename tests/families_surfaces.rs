@@ -7,6 +7,7 @@ use solidkit_kernel::primitive::{MeshSource, NoMeshResolver, Primitive};
 use solidkit_kernel::surface::SurfaceSpec;
 use solidkit_kernel::{NodeKind, Solid, json};
 use solidkit_meshing::TopologyReport;
+use solidkit_meshing::io::FileMeshResolver;
 use solidkit_tests::{fixture, load_tree, mesh, rel_err};
 use std::f64::consts::PI;
 
@@ -82,6 +83,32 @@ fn formula_surfaces_graph_and_closed_torus() {
 fn triangular_patches() {
     check("bezier_triangle.json", None, 0.04);
     check("pn_triangles.json", None, 0.01);
+}
+
+#[test]
+fn pn_triangles_from_a_mesh_file() {
+    // The octahedron's angle-weighted normals are those of the sphere through its vertices, so
+    // the solid is the closed PN octahedron of pn_triangles.json but with 10 segments.
+    let path = fixture("surfaces/pn_mesh.json");
+    let text = std::fs::read_to_string(&path).unwrap();
+    let solid = json::from_str_with(&text, &FileMeshResolver::for_tree_file(&path)).unwrap();
+    solid.validate().unwrap();
+    let m = spec(&solid)
+        .closed_mesh(&FileMeshResolver::for_tree_file(&path))
+        .unwrap();
+    let r = TopologyReport::of(&m);
+    assert!(r.is_closed_manifold(), "{r:?}");
+    assert!(
+        r.volume > 4.0 / 3.0 + 0.5 && r.volume < 4.0 / 3.0 * PI,
+        "{}",
+        r.volume
+    );
+    let (_, meshed) = mesh(&solid, 64);
+    assert!(meshed.is_closed_manifold() && rel_err(meshed.volume, r.volume) < 0.02);
+    // Written back with its path; without a resolver the file is refused with its key.
+    assert!(json::to_string(&solid).contains("\"path\": \"octahedron.obj\""));
+    let e = json::from_str(&text).unwrap_err().to_string();
+    assert!(e.contains("path"), "{e}");
 }
 
 #[test]
