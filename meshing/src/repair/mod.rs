@@ -6,19 +6,21 @@
 //! splits non-manifold vertices into one copy per fan (`split.rs`), orients each shell
 //! consistently (`orient.rs`: breadth-first over manifold edges), fills holes (`holes.rs`), drops
 //! shells that enclose no volume and turns each remaining shell outward, or inward for cavities,
-//! by signed volume and nesting depth (`nesting.rs`), and finally moves the copies of split
-//! vertices apart into their own shells (`separate.rs`). No vertex ends further than the weld
-//! tolerance from the input vertex it comes from.
+//! by signed volume and nesting depth (`nesting.rs`: a ray per shell, `rays.rs`), and finally
+//! moves the copies of split vertices apart into their own shells (`separate.rs`). No vertex
+//! ends further than the weld tolerance from the input vertex it comes from.
 //!
 //! [`rebuild`] (`rebuild.rs`) remeshes the winding-number solid of a mesh by dual contouring,
 //! which is closed, manifold and free of self-intersections by construction, and measures the
 //! Hausdorff distance to the input. Every step is iterative (work lists, union-find, queues).
 
+mod cycles;
 mod edges;
 mod faces;
 mod holes;
 mod nesting;
 mod orient;
+mod rays;
 mod rebuild;
 mod separate;
 mod split;

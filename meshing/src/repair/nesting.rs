@@ -1,10 +1,13 @@
 //! Outward orientation per shell. Shells (faces connected through shared vertices) that enclose
 //! no volume are removed (fins, flat sheets closed by hole filling). Each remaining shell is
 //! wound so that its signed volume is positive, or negative when it lies inside an odd number of
-//! other shells (a cavity), tested by the generalised winding number of a vertex (summed directly,
-//! or through the kernel's fast winding-number tree for large containers).
+//! other shells (a cavity), tested at one vertex of the shell: by one ray against each
+//! containing shell that is closed and oriented (`rays.rs`, `cycles.rs`: one parallel pass over
+//! the faces for every pair), otherwise by the generalised winding number (summed directly, or
+//! through the kernel's fast winding-number tree for large containers).
 
 use super::split::UnionFind;
+use super::{cycles, rays};
 use crate::IndexedMesh;
 use glam::DVec3;
 use solidkit_kernel::primitive::MeshSolid;
@@ -90,21 +93,77 @@ pub(super) fn orient_shells(positions: &[DVec3], tris: &mut Vec<[u32; 3]>) -> Or
 
 /// Per shell, how many other shells contain its first vertex (all 0 above
 /// [`MAX_NESTING_SHELLS`] shells). Only shells whose bounding box contains the other's are
-/// tested; a container is queried through the kernel's fast winding-number tree when the direct
-/// sums would cost more than [`DIRECT_WORK`] triangle visits.
+/// tested. A container that is a 2-cycle (closed and oriented, `cycles.rs`) is tested by one ray
+/// per contained shell (`rays.rs`: one pass over the faces for all pairs); the others, and the
+/// pairs a ray leaves ambiguous (a point on or next to the container), by the generalised
+/// winding number, through the kernel's fast winding-number tree when the direct sums would cost
+/// more than [`DIRECT_WORK`] triangle visits. Both give the same answer on a cycle.
 fn nesting_depths(positions: &[DVec3], tris: &[[u32; 3]], shells: &[Shell]) -> Vec<u32> {
     let mut depth = vec![0u32; shells.len()];
     if shells.len() > MAX_NESTING_SHELLS {
         return depth;
     }
     let point = |s: &Shell| positions[tris[s.faces[0]][0] as usize];
-    for (j, t) in shells.iter().enumerate() {
-        let inside: Vec<usize> = (0..shells.len())
-            .filter(|&i| {
-                let s = &shells[i];
-                i != j && t.lo.cmple(s.lo).all() && t.hi.cmpge(s.hi).all()
-            })
-            .collect();
+    // Per shell, the other shells whose bounding box contains its own (ascending).
+    let containers: Vec<Vec<u32>> = shells
+        .iter()
+        .enumerate()
+        .map(|(i, s)| {
+            (0..shells.len())
+                .filter(|&j| {
+                    let t = &shells[j];
+                    i != j && t.lo.cmple(s.lo).all() && t.hi.cmpge(s.hi).all()
+                })
+                .map(|j| j as u32)
+                .collect()
+        })
+        .collect();
+    let mut used: Vec<u32> = containers.iter().flatten().copied().collect();
+    if used.is_empty() {
+        return depth;
+    }
+    used.sort_unstable();
+    used.dedup();
+    let mut cycle = vec![false; shells.len()];
+    for &j in &used {
+        cycle[j as usize] = cycles::is_cycle(tris, &shells[j as usize].faces);
+    }
+    let mut face_shell = vec![u32::MAX; tris.len()];
+    for &j in used.iter().filter(|&&j| cycle[j as usize]) {
+        for &f in &shells[j as usize].faces {
+            face_shell[f] = j;
+        }
+    }
+    let queries: Vec<DVec3> = shells.iter().map(point).collect();
+    let by_ray: Vec<Vec<u32>> = containers
+        .iter()
+        .map(|c| c.iter().copied().filter(|&j| cycle[j as usize]).collect())
+        .collect();
+    let scale = shells
+        .iter()
+        .map(|s| (s.hi - s.lo).length() + s.lo.abs().max(s.hi.abs()).max_element())
+        .fold(0.0, f64::max);
+    let pairs = rays::Pairs {
+        queries: &queries,
+        containers: &by_ray,
+        face_shell: &face_shell,
+    };
+    let ray_answers = rays::inside_by_rays(positions, tris, &pairs, scale);
+    // Per container, the shells left to the winding number.
+    let mut by_winding: Vec<Vec<usize>> = vec![Vec::new(); shells.len()];
+    for (i, c) in containers.iter().enumerate() {
+        for &j in c {
+            let answer = by_ray[i]
+                .binary_search(&j)
+                .ok()
+                .and_then(|k| ray_answers[i][k]);
+            match answer {
+                Some(inside) => depth[i] += u32::from(inside),
+                None => by_winding[j as usize].push(i),
+            }
+        }
+    }
+    for (t, inside) in shells.iter().zip(by_winding) {
         if inside.is_empty() {
             continue;
         }
@@ -132,7 +191,7 @@ fn nesting_depths(positions: &[DVec3], tris: &[[u32; 3]], shells: &[Shell]) -> V
 }
 
 /// The generalised winding number of `faces` at `p` (solid angles, Van Oosterom–Strackee).
-fn winding(positions: &[DVec3], tris: &[[u32; 3]], faces: &[usize], p: DVec3) -> f64 {
+pub(super) fn winding(positions: &[DVec3], tris: &[[u32; 3]], faces: &[usize], p: DVec3) -> f64 {
     let mut sum = 0.0;
     for &f in faces {
         let [a, b, c] = tris[f].map(|i| positions[i as usize] - p);

@@ -90,3 +90,77 @@ fn no_usable_triangle_is_an_error() {
         Err(RepairError::NoUsableTriangles { faces: 1 })
     ));
 }
+
+/// Appends the 12 faces of the box `lo..hi`, wound outward (`inward`: reversed); returns the
+/// faces' group id `group` once per face.
+fn add_box(m: &mut IndexedMesh, lo: DVec3, hi: DVec3, inward: bool, group: usize) -> Vec<usize> {
+    let base = m.positions.len() as u32;
+    for i in 0..8u32 {
+        let pick = |k: usize| if i >> k & 1 == 1 { hi[k] } else { lo[k] };
+        m.positions.push(DVec3::new(pick(0), pick(1), pick(2)));
+    }
+    for t in cube().triangles {
+        let t = t.map(|v| v + base);
+        m.triangles
+            .push(if inward { [t[0], t[2], t[1]] } else { t });
+    }
+    vec![group; 12]
+}
+
+#[test]
+fn nesting_turns_each_shell_by_its_depth_with_rays_through_grid_edges() {
+    let mut m = IndexedMesh::default();
+    let mut group = Vec::new();
+    let v = DVec3::splat;
+    // Depth 0 (wound inward: must turn), 1 (a cavity), 2 (an island).
+    group.extend(add_box(&mut m, v(0.0), v(12.0), true, 0));
+    group.extend(add_box(&mut m, v(1.0), v(11.0), false, 1));
+    group.extend(add_box(&mut m, v(2.0), v(10.0), true, 2));
+    // 27 unit boxes in the island (depth 3: cavities), corners on the grid, so rays from them
+    // meet the others' edges and corners unless cast generically; and one touching the island's
+    // wall from inside (its corners lie on the island's faces: ambiguous for a ray).
+    let mut next = 3;
+    for i in 0..27 {
+        let lo = DVec3::new(
+            f64::from(3 + 2 * (i % 3)),
+            f64::from(3 + 2 * (i / 3 % 3)),
+            f64::from(3 + 2 * (i / 9)),
+        );
+        group.extend(add_box(&mut m, lo, lo + 1.0, i % 2 == 0, next));
+        next += 1;
+    }
+    let touching = next;
+    group.extend(add_box(&mut m, v(2.0), v(2.5), false, touching));
+    // An open box (one face missing: not a cycle, decided by the winding number) around a box.
+    let open = touching + 1;
+    group.extend(add_box(&mut m, v(20.0), v(30.0), false, open));
+    m.triangles.truncate(m.triangles.len() - 2);
+    group.truncate(group.len() - 2);
+    group.extend(add_box(&mut m, v(24.0), v(25.0), false, open + 1));
+    let mut tris = m.triangles.clone();
+    let oriented = nesting::orient_shells(&m.positions, &mut tris);
+    assert_eq!(oriented.removed, 0);
+    let mut volume = vec![0.0; open + 2];
+    for (t, &(f, _)) in tris.iter().zip(&oriented.from) {
+        let [a, b, c] = t.map(|i| m.positions[i as usize]);
+        volume[group[f as usize]] += a.dot(b.cross(c)) / 6.0;
+    }
+    let sign = |g: usize| volume[g] > 0.0;
+    assert!(sign(0) && !sign(1) && sign(2), "{volume:?}");
+    for (g, _) in volume.iter().enumerate().take(touching).skip(3) {
+        assert!(
+            !sign(g),
+            "unit box {g} is a cavity in the island: {volume:?}"
+        );
+    }
+    // The winding number at a corner on the island's wall is 1/8 of a turn: not inside it.
+    let corner = v(2.0);
+    let island: Vec<usize> = (24..36).collect();
+    let w = nesting::winding(&m.positions, &m.triangles, &island, corner);
+    assert!(w.abs() < 0.5, "{w}");
+    assert!(
+        sign(touching),
+        "depth 2 (outer box, cavity): outward, {volume:?}"
+    );
+    assert!(!sign(open + 1), "inside the open box: inward, {volume:?}");
+}
