@@ -340,15 +340,21 @@ pub(super) fn write(out: &mut dyn Write, mesh: &IndexedMesh, encoding: Encoding)
     }
 }
 
-/// The unit normal and the three corners of each triangle, in `f32`.
-fn facets(mesh: &IndexedMesh) -> impl Iterator<Item = (Vec3, [Vec3; 3])> + '_ {
-    mesh.triangles.iter().map(|triangle| {
+/// The unit normal and the three corners of each of `triangles` (of `mesh`), in `f32`.
+fn facets<'a>(
+    mesh: &'a IndexedMesh,
+    triangles: &'a [[u32; 3]],
+) -> impl Iterator<Item = (Vec3, [Vec3; 3])> + 'a {
+    triangles.iter().map(|triangle| {
         let [a, b, c] =
             triangle.map(|i| mesh.positions.get(i as usize).copied().unwrap_or_default());
         let normal = (b - a).cross(c - a).normalize_or_zero();
         (normal.as_vec3(), [a, b, c].map(DVec3::as_vec3))
     })
 }
+
+/// Triangles per record block formatted in parallel by [`write_binary`].
+const WRITE_BLOCK: usize = 1 << 14;
 
 fn write_binary(out: &mut dyn Write, mesh: &IndexedMesh) -> io::Result<()> {
     let mut header = [b' '; HEADER_LEN];
@@ -357,20 +363,35 @@ fn write_binary(out: &mut dyn Write, mesh: &IndexedMesh) -> io::Result<()> {
     out.write_all(&header)?;
     let count = u32::try_from(mesh.triangles.len()).map_err(io::Error::other)?;
     out.write_all(&count.to_le_bytes())?;
-    for (normal, corners) in facets(mesh) {
-        for v in std::iter::once(normal).chain(corners) {
-            for c in v.to_array() {
-                out.write_all(&c.to_le_bytes())?;
-            }
+    // Blocks of records formatted in parallel, written in order.
+    let record = RECORD_LEN as usize;
+    let blocks: Vec<&[[u32; 3]]> = mesh.triangles.chunks(WRITE_BLOCK).collect();
+    for group in blocks.chunks(rayon::current_num_threads().max(1) * 4) {
+        let bytes: Vec<Vec<u8>> = group
+            .par_iter()
+            .map(|block| {
+                let mut buf = Vec::with_capacity(block.len() * record);
+                for (normal, corners) in facets(mesh, block) {
+                    for v in std::iter::once(normal).chain(corners) {
+                        for c in v.to_array() {
+                            buf.extend_from_slice(&c.to_le_bytes());
+                        }
+                    }
+                    buf.extend_from_slice(&[0, 0]);
+                }
+                buf
+            })
+            .collect();
+        for b in bytes {
+            out.write_all(&b)?;
         }
-        out.write_all(&[0, 0])?;
     }
     Ok(())
 }
 
 fn write_ascii(out: &mut dyn Write, mesh: &IndexedMesh) -> io::Result<()> {
     writeln!(out, "solid solidkit")?;
-    for (n, corners) in facets(mesh) {
+    for (n, corners) in facets(mesh, &mesh.triangles) {
         writeln!(out, "  facet normal {:e} {:e} {:e}", n.x, n.y, n.z)?;
         writeln!(out, "    outer loop")?;
         for v in corners {

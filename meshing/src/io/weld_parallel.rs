@@ -4,12 +4,14 @@
 //!
 //! Corners are split by a hash of their position into [`SHARDS`] shards, each small enough for
 //! its hash map to stay in cache; within a shard, corners are visited in file order, so each
-//! finds the first corner at its position. One serial pass then numbers the first corners in
-//! file order.
+//! finds the first corner at its position (a shard writes only its own corners' entries, through
+//! relaxed atomics: no ordering is needed, the parallel loop's end synchronises). One serial pass
+//! then numbers the first corners in file order.
 
 use glam::DVec3;
 use rayon::prelude::*;
 use std::collections::HashMap;
+use std::sync::atomic::{AtomicU32, Ordering};
 
 use super::key_hash::{KeyHash, fold};
 
@@ -28,12 +30,14 @@ fn key(p: [f32; 3]) -> u128 {
 
 /// The welded positions and the vertex index of every corner; `None` when there are more than
 /// 2³² distinct positions.
+///
+/// Memory: besides the result, one byte and two `u32` per corner (the keys are recomputed from
+/// the corners rather than stored: on a large file every temporary array costs its page faults).
 pub(super) fn weld(corners: &[[f32; 3]]) -> Option<(Vec<DVec3>, Vec<u32>)> {
     let n = corners.len();
-    let keys: Vec<u128> = corners.par_iter().map(|&p| key(p)).collect();
-    let shard_of = |k: u128| (fold(k, SHARD_K) >> 56) as usize % SHARDS;
+    let shard_of = |c: usize| (fold(key(corners[c]), SHARD_K) >> 56) as usize % SHARDS;
     // Counting sort of the corners by shard, file order kept within each.
-    let shards: Vec<u8> = keys.par_iter().map(|&k| shard_of(k) as u8).collect();
+    let shards: Vec<u8> = (0..n).into_par_iter().map(|c| shard_of(c) as u8).collect();
     let mut starts = vec![0usize; SHARDS + 1];
     for &s in &shards {
         starts[usize::from(s) + 1] += 1;
@@ -41,42 +45,31 @@ pub(super) fn weld(corners: &[[f32; 3]]) -> Option<(Vec<DVec3>, Vec<u32>)> {
     for s in 0..SHARDS {
         starts[s + 1] += starts[s];
     }
-    // Each shard's keys with their corners, file order kept, read in sequence below.
     let mut fill = starts.clone();
-    let mut by_shard = vec![(0u128, 0u32); n];
-    for (c, (&s, &k)) in shards.iter().zip(&keys).enumerate() {
+    let mut by_shard = vec![0u32; n];
+    for (c, &s) in shards.iter().enumerate() {
         let at = &mut fill[usize::from(s)];
-        by_shard[*at] = (k, c as u32);
+        by_shard[*at] = c as u32;
         *at += 1;
     }
-    drop((shards, keys));
-    // The first corner at each corner's position, aligned with `by_shard`.
-    let mut first_sorted = vec![0u32; n];
-    let mut pieces = Vec::with_capacity(SHARDS);
-    let mut rest = first_sorted.as_mut_slice();
-    for s in 0..SHARDS {
-        let (piece, tail) = rest.split_at_mut(starts[s + 1] - starts[s]);
-        pieces.push((s, piece));
-        rest = tail;
-    }
-    pieces.into_par_iter().for_each(|(s, piece)| {
+    drop(shards);
+    // The first corner at each corner's position (each corner is written by its shard only).
+    let first_of: Vec<AtomicU32> = (0..n).into_par_iter().map(|_| AtomicU32::new(0)).collect();
+    (0..SHARDS).into_par_iter().for_each(|s| {
         let members = &by_shard[starts[s]..starts[s + 1]];
         let mut seen: HashMap<u128, u32, KeyHash> =
             HashMap::with_capacity_and_hasher(members.len(), KeyHash::default());
-        for (out, &(k, c)) in piece.iter_mut().zip(members) {
-            *out = *seen.entry(k).or_insert(c);
+        for &c in members {
+            let f = *seen.entry(key(corners[c as usize])).or_insert(c);
+            first_of[c as usize].store(f, Ordering::Relaxed);
         }
     });
-    let mut first_of = vec![0u32; n];
-    for (&(_, c), &f) in by_shard.iter().zip(&first_sorted) {
-        first_of[c as usize] = f;
-    }
-    drop((by_shard, first_sorted));
+    drop(by_shard);
     // Number the first corners in file order.
     let mut index = vec![0u32; n];
     let mut positions = Vec::new();
     for c in 0..n {
-        let f = first_of[c] as usize;
+        let f = first_of[c].load(Ordering::Relaxed) as usize;
         if f == c {
             index[c] = u32::try_from(positions.len()).ok()?;
             positions.push(DVec3::from_array(corners[c].map(f64::from)));

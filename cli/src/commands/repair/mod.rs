@@ -33,7 +33,6 @@ pub fn run(a: &RepairArgs) -> Result<u8> {
     let skip = ReportOptions {
         self_intersections: false,
     };
-    let before = TopologyReport::with_options(&input, &skip);
     let after_options = if a.no_self_intersections {
         skip
     } else {
@@ -41,10 +40,32 @@ pub fn run(a: &RepairArgs) -> Result<u8> {
     };
     let diagonal = bbox_diagonal(&input);
     let weld = a.weld.unwrap_or(DEFAULT_WELD * diagonal);
+    // The input's report beside the repair (both parallel, with serial stretches that overlap).
+    let (before, minimal) = rayon::join(
+        || TopologyReport::with_options(&input, &skip),
+        || repair_minimal(&input, &MinimalOptions { weld }),
+    );
     // A mesh without any enclosing shell is bad input in every mode.
-    let minimal =
-        repair_minimal(&input, &MinimalOptions { weld }).map_err(|e| anyhow!("{name}: {e}"))?;
-    let minimal_report = TopologyReport::with_options(&minimal.mesh, &after_options);
+    let minimal = minimal.map_err(|e| anyhow!("{name}: {e}"))?;
+    // In minimal mode the result is known: written beside its report (the outcome is handled
+    // where the write would be).
+    let (minimal_report, written) = if a.mode == RepairMode::Minimal {
+        let (report, written) = rayon::join(
+            || TopologyReport::with_options(&minimal.mesh, &after_options),
+            || write_mesh(&a.output, &minimal.mesh),
+        );
+        (report, Some(written))
+    } else {
+        (
+            TopologyReport::with_options(&minimal.mesh, &after_options),
+            None,
+        )
+    };
+    let mut written = written;
+    let mut write = |mesh: &IndexedMesh| match written.take() {
+        Some(done) => done,
+        None => write_mesh(&a.output, mesh),
+    };
     let need_rebuild = match a.mode {
         RepairMode::Minimal => false,
         RepairMode::Rebuild => true,
@@ -73,7 +94,7 @@ pub fn run(a: &RepairArgs) -> Result<u8> {
     let counts = minimal.counts;
     let rebuild_json = rebuilt.as_ref().map(|r| rebuild_json(r, diagonal));
     if a.json {
-        write_mesh(&a.output, result)?;
+        write(result)?;
         let v = json!({
             "file": name,
             "mode": mode_name(a.mode),
@@ -108,7 +129,7 @@ pub fn run(a: &RepairArgs) -> Result<u8> {
         outln!("== after ({})", mode_name(a.mode))?;
         outln!("verdict: {}", after.verdict())?;
         out!("{}", after.to_text())?;
-        write_mesh(&a.output, result)?;
+        write(result)?;
         outln!("wrote: {}", a.output.display())?;
     }
     Ok(if after.is_valid_solid() { 0 } else { 1 })
