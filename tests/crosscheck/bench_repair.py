@@ -13,6 +13,10 @@ Meshes (binary STL, written once into --work): `solidkit mesh fixtures/bench/gyr
 - admesh: `admesh --exact --nearby --remove-unconnected --fill-holes --normal-directions
   --normal-values -b OUT.stl IN` (single-threaded).
 
+Then `check` (issue 20) on the clean mesh: `solidkit --threads T check IN` (the full report,
+self-intersections included) and with `--no-self-intersections`, against `admesh IN` (reads,
+counts and prints its statistics; no self-intersection test), same interleaving.
+
   python tests/crosscheck/bench_repair.py [--resolution 144] [--repeat 5] [--work /tmp/bench_repair]
 """
 import argparse
@@ -76,7 +80,7 @@ def main():
     out = a.work / "out.stl"
     admesh = ["admesh", "--exact", "--nearby", "--remove-unconnected", "--fill-holes",
               "--normal-directions", "--normal-values", "-b", out]
-    print("| input | triangles | system | median s | runs (s) |\n|---|---|---|---|---|")
+    print("| input | triangles | system | median s | / admesh | runs (s) |\n|---|---|---|---|---|---|")
     for mesh in (clean, broken):
         faces = struct.unpack_from("<I", mesh.read_bytes()[:84], 80)[0]
         systems = {}
@@ -92,9 +96,30 @@ def main():
                 dt = timed(cmd)
                 if r:
                     runs[k].append(dt)
-        for k, ts in runs.items():
-            print(f"| {mesh.name} | {faces} | {k} | {statistics.median(ts):.2f} | "
-                  + " ".join(f"{t:.2f}" for t in ts) + " |", flush=True)
+        report(mesh, faces, runs)
+    checks = {}
+    for t in (1, 2):
+        base = [exe, "--threads", str(t), "check", clean]
+        checks[f"solidkit check, {t} thread{'s' if t > 1 else ''}"] = base
+        checks[f"solidkit check --no-self-intersections, {t} thread{'s' if t > 1 else ''}"] = \
+            base + ["--no-self-intersections"]
+    checks["admesh (1 thread)"] = ["admesh", clean]
+    runs = {k: [] for k in checks}
+    for r in range(a.repeat + 1):
+        for k, cmd in checks.items():
+            dt = timed(cmd)
+            if r:
+                runs[k].append(dt)
+    report(clean, struct.unpack_from("<I", clean.read_bytes()[:84], 80)[0], runs)
+
+
+def report(mesh: Path, faces: int, runs: dict):
+    """Prints one table row per system, with its ratio to admesh's median."""
+    ref = statistics.median(runs["admesh (1 thread)"])
+    for k, ts in runs.items():
+        m = statistics.median(ts)
+        print(f"| {mesh.name} | {faces} | {k} | {m:.2f} | {m / ref:.2f} | "
+              + " ".join(f"{t:.2f}" for t in ts) + " |", flush=True)
 
 
 if __name__ == "__main__":
