@@ -260,3 +260,40 @@ fn bad_curve_profiles_are_located_errors() {
         assert!(err.contains(message), "{text}: {err}");
     }
 }
+
+#[test]
+fn costly_or_undefined_curves_are_refused() {
+    let dir = tempfile::tempdir().unwrap();
+    // 300 control points: over the degree limit (every point counts at every parameter).
+    let points: Vec<String> = (0..300).map(|i| format!("[{i}, {}]", i % 7)).collect();
+    let big = dir.path().join("big.json");
+    std::fs::write(
+        &big,
+        format!(r#"{{"type": "bezier", "points": [{}]}}"#, points.join(", ")),
+    )
+    .unwrap();
+    // 1/u is infinite at u = 0: no polyline is written.
+    let inf = dir.path().join("inf.json");
+    std::fs::write(
+        &inf,
+        r#"{"type": "formula", "x": "1/u", "y": "u", "domain": [0, 1]}"#,
+    )
+    .unwrap();
+    let out = dir.path().join("inf.obj");
+    for (args, message) in [
+        (vec![path_str(&big)], "300 control points: at most 256"),
+        (
+            vec![path_str(&inf), "-o", path_str(&out), "--samples", "5"],
+            "not finite",
+        ),
+        (vec![path_str(&inf), "-o", path_str(&out)], "not finite"),
+    ] {
+        let mut a = vec!["curve"];
+        a.extend(args);
+        let o = solidkit(&a);
+        let err = String::from_utf8_lossy(&o.stderr);
+        assert_eq!(o.status.code(), Some(2), "{err}");
+        assert!(err.contains(message), "{err}");
+    }
+    assert!(!out.exists());
+}

@@ -110,22 +110,32 @@ fn bound_name(a: &CurveArgs, line: &Polyline) -> &'static str {
 
 /// The polyline asked for: equally spaced samples, or within the chord-error bound.
 fn polyline_of(curve: &Parametric, a: &CurveArgs) -> Result<Polyline> {
-    if let Some(n) = a.samples {
-        let params = uniform_params(curve.domain(), n as usize);
-        let points = params.iter().map(|&u| curve.point(u)).collect();
-        return Ok(Polyline {
-            params,
-            points,
-            certified: false,
-        });
-    }
-    let tolerance = chord_error(curve, a).unwrap_or(0.0);
-    if !(tolerance.is_finite() && tolerance > 0.0) {
-        bail!("--chord-error {tolerance}: expected a positive number");
-    }
-    let line = curve
-        .polyline(tolerance)
-        .map_err(|e| anyhow!("--chord-error: {e}"))?;
+    let line = match a.samples {
+        Some(n) => {
+            let params = uniform_params(curve.domain(), n as usize);
+            let points = params.iter().map(|&u| curve.point(u)).collect();
+            Polyline {
+                params,
+                points,
+                certified: false,
+            }
+        }
+        None => {
+            if a.chord_error.is_none() && !curve.size().is_finite() {
+                bail!(
+                    "the curve has a point that is not finite, so it has no size for the \
+                     default chord error: check its formulas"
+                );
+            }
+            let tolerance = chord_error(curve, a).unwrap_or(0.0);
+            if !(tolerance.is_finite() && tolerance > 0.0) {
+                bail!("--chord-error {tolerance}: expected a positive number");
+            }
+            curve
+                .polyline(tolerance)
+                .map_err(|e| anyhow!("--chord-error: {e}"))?
+        }
+    };
     if let Some(p) = line.points.iter().find(|p| !p.is_finite()) {
         bail!("the curve has a point that is not finite ({p}): check its formulas");
     }

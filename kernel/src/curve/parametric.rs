@@ -91,7 +91,12 @@ impl Parametric {
     pub fn is_closed(&self) -> bool {
         let (t0, t1) = self.domain();
         let (a, b) = (self.point(t0), self.point(t1));
-        (b - a).length() <= 1e-9 * self.size().max(f64::MIN_POSITIVE)
+        let (gap, size) = ((b - a).length(), self.size());
+        if size.is_finite() {
+            gap <= 1e-9 * size.max(f64::MIN_POSITIVE)
+        } else {
+            gap == 0.0
+        }
     }
 
     /// The length `∫ |C'(t)| dt`: Gauss–Legendre quadrature on nearly straight spans for curves

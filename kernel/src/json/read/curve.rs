@@ -18,6 +18,12 @@ use crate::curve::{
 use crate::primitive::NoMeshResolver;
 use glam::DVec3;
 
+/// Most control points of a Bézier curve and highest spline degree: every control point of a
+/// Bézier curve counts at every parameter, so evaluation costs grow with the square of the
+/// degree (a 256-point curve flattens in about a second; longer curves belong in composite pieces
+/// or B-splines, whose cost depends on their degree only).
+const MAX_DEGREE: usize = 255;
+
 /// The curve kinds, for error messages.
 const KINDS: &str =
     "bezier, hermite, bspline, nurbs, interpolating, cubic_through, composite or formula";
@@ -211,18 +217,33 @@ impl Params<'_, '_> {
         let degree = || -> R<usize> {
             let i = self.curve_member(n, "degree")?;
             let d = self.number_at(i, &k("degree"))?;
-            if d >= 0.0 && d.fract() == 0.0 && d <= 1024.0 {
+            if d >= 0.0 && d.fract() == 0.0 && d <= MAX_DEGREE as f64 {
                 Ok(d as usize)
             } else {
-                Err(self
-                    .reader
-                    .located(i, &k("degree"), "expected a whole number of at most 1024"))
+                Err(self.reader.located(
+                    i,
+                    &k("degree"),
+                    format!("expected a whole number of at most {MAX_DEGREE}"),
+                ))
             }
         };
         let curve = match ty {
             "bezier" => {
                 self.sweep_nested_keys(n, &["points"])?;
-                Bezier::new(points("points")?).map(Curve::Bezier)
+                let p = points("points")?;
+                if p.len() > MAX_DEGREE + 1 {
+                    return Err(self.reader.located(
+                        self.curve_member(n, "points")?,
+                        &k("points"),
+                        format!(
+                            "{} control points: at most {} (degree {MAX_DEGREE}; every point \
+                             counts at every parameter: use composite pieces or a bspline)",
+                            p.len(),
+                            MAX_DEGREE + 1
+                        ),
+                    ));
+                }
+                Bezier::new(p).map(Curve::Bezier)
             }
             "hermite" => {
                 self.sweep_nested_keys(n, &["points", "tangents"])?;
