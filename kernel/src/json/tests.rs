@@ -114,3 +114,27 @@ fn blends_offsets_and_shells_round_trip_and_validate() {
     assert!(Solid::sphere(1.0).shell(-1.0).validate().is_err());
     assert!(Solid::sphere(1.0).offset(f64::NAN).validate().is_err());
 }
+
+#[test]
+fn new_curve_kinds_round_trip_as_paths_and_rails() {
+    // A composite path (Hermite chain then a cubic_through piece, C0) and a radial profile.
+    let text = r#"{"type": "union", "children": [
+        {"type": "sweep", "profile": {"type": "radial", "rho": "0.1 + 0.02*cos(3*u)"},
+         "path": {"type": "composite", "continuity": ["C0"], "pieces": [
+            {"type": "hermite", "points": [[0, 0, 0], [1, 0, 1], [2, 1, 1]],
+             "tangents": [[1, 0, 1], [1, 0, 0], [0, 1, 0]]},
+            {"type": "cubic_through", "points": [[2, 1, 1], [2, 2, 1], [3, 2, 2], [3, 3, 3]]}]}},
+        {"type": "ruled",
+         "bottom": {"type": "nurbs", "degree": 2, "points": [[1, 0], [1, 1], [0, 1], [-1, 1], [-1, 0], [-1, -1], [0, -1], [1, -1], [1, 0]],
+                    "weights": [1, 0.7071067811865476, 1, 0.7071067811865476, 1, 0.7071067811865476, 1, 0.7071067811865476, 1],
+                    "knots": [0, 0, 0, 1, 1, 2, 2, 3, 3, 4, 4, 4]},
+         "top": {"type": "composite", "continuity": "G1", "pieces": [
+            {"type": "bezier", "points": [[0.5, 0, 1], [0.5, 0.5, 1], [-0.5, 0.5, 1], [-0.5, 0, 1]]},
+            {"type": "bezier", "points": [[-0.5, 0, 1], [-0.5, -0.5, 1], [0.5, -0.5, 1], [0.5, 0, 1]]}]}}]}"#;
+    let s = json::from_str(text).unwrap();
+    let written = json::to_string(&s);
+    assert!(written.contains("\"cubic_through\"") && written.contains("\"composite\""));
+    let back = json::from_str(&written).unwrap();
+    assert_eq!(json::to_string(&back), written);
+    assert!(back == s);
+}
