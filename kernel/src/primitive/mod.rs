@@ -91,6 +91,17 @@ pub trait Shape {
         1.0
     }
 
+    /// Values and gradients at many points, double precision (the gradient batch evaluator's
+    /// entry point). Must give exactly [`Shape::value`] and [`Shape::gradient`] at each point;
+    /// the default calls them, primitives whose per-point setup is costly (a normalisation)
+    /// override it to do that setup once.
+    fn values_gradients(&self, pts: &[DVec3], values: &mut [f64], gradients: &mut [DVec3]) {
+        for ((p, v), g) in pts.iter().zip(values.iter_mut()).zip(gradients.iter_mut()) {
+            *v = self.value(*p);
+            *g = self.gradient(*p);
+        }
+    }
+
     /// Values at many points in structure-of-arrays form, single precision (the batch
     /// evaluator's entry point). The default calls [`Shape::value`] per point; hot primitives
     /// override it with loops the compiler vectorises.
@@ -332,6 +343,9 @@ impl Shape for Primitive {
     }
     fn values_f32(&self, x: &[f32], y: &[f32], z: &[f32], out: &mut [f32]) {
         dispatch!(self, s => s.values_f32(x, y, z, out))
+    }
+    fn values_gradients(&self, pts: &[DVec3], values: &mut [f64], gradients: &mut [DVec3]) {
+        dispatch!(self, s => s.values_gradients(pts, values, gradients))
     }
 }
 

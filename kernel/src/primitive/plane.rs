@@ -27,6 +27,14 @@ impl Shape for HalfSpace {
     fn gradient(&self, _p: DVec3) -> DVec3 {
         self.unit()
     }
+    fn values_gradients(&self, pts: &[DVec3], values: &mut [f64], gradients: &mut [DVec3]) {
+        // One normalisation for the batch (the same bits as per point).
+        let n = self.unit();
+        for ((p, v), g) in pts.iter().zip(values.iter_mut()).zip(gradients.iter_mut()) {
+            *v = n.dot(*p) - self.offset;
+            *g = n;
+        }
+    }
     fn interval(&self, b: &Aabb) -> Interval {
         let n = self.unit();
         let mut acc = Interval::point(-self.offset);

@@ -13,6 +13,10 @@ use glam::DVec3;
 pub struct GradientScratch {
     /// Register file: for register `r`, lanes `[4r·CHUNK, 4(r+1)·CHUNK)` hold value, gx, gy, gz.
     regs: Vec<f64>,
+    /// A leaf's points in its frame, and its values and gradients there (`CHUNK` each).
+    local: Vec<DVec3>,
+    values: Vec<f64>,
+    gradients: Vec<DVec3>,
 }
 
 impl GradientScratch {
@@ -20,6 +24,11 @@ impl GradientScratch {
         let need = 4 * program.register_count * CHUNK;
         if self.regs.len() < need {
             self.regs.resize(need, 0.0);
+        }
+        if self.local.len() < CHUNK {
+            self.local.resize(CHUNK, DVec3::ZERO);
+            self.values.resize(CHUNK, 0.0);
+            self.gradients.resize(CHUNK, DVec3::ZERO);
         }
     }
 }
@@ -67,45 +76,56 @@ impl Program {
                 Instr::Leaf { prim, frame } => {
                     let f = &self.frames[frame as usize];
                     let shape = &self.primitives[prim as usize];
-                    for (k, p) in pts.iter().enumerate() {
-                        let q = f.apply(*p);
-                        let g = f.gradient_to_world(shape.gradient(q));
-                        let v = f.sigma * shape.value(q);
-                        for (c, x) in [v, g.x, g.y, g.z].into_iter().enumerate() {
-                            s.regs[(4 * dst + c) * CHUNK + k] = x;
-                        }
+                    for (q, p) in s.local.iter_mut().zip(pts) {
+                        *q = f.apply(*p);
+                    }
+                    // One dispatch per chunk: the primitive's own batch loop.
+                    shape.values_gradients(
+                        &s.local[..n],
+                        &mut s.values[..n],
+                        &mut s.gradients[..n],
+                    );
+                    let (head, rest) = s.regs[4 * dst * CHUNK..].split_at_mut(CHUNK);
+                    let (gx, rest) = rest.split_at_mut(CHUNK);
+                    let (gy, rest) = rest.split_at_mut(CHUNK);
+                    let gz = &mut rest[..CHUNK];
+                    for k in 0..n {
+                        let g = f.gradient_to_world(s.gradients[k]);
+                        head[k] = f.sigma * s.values[k];
+                        gx[k] = g.x;
+                        gy[k] = g.y;
+                        gz[k] = g.z;
                     }
                 }
-                Instr::Min(a, b) | Instr::Max(a, b) | Instr::SmoothMin(a, b, _) => {
+                Instr::Min(a, b) | Instr::Max(a, b) => {
                     let (ra, rb) = (reg(a), reg(b));
+                    let min = matches!(ins, Instr::Min(..));
                     for k in 0..n {
                         let va = s.regs[4 * ra * CHUNK + k];
                         let vb = s.regs[4 * rb * CHUNK + k];
-                        let mut out = [0.0; 4];
-                        match *ins {
-                            Instr::Min(..) | Instr::Max(..) => {
-                                let take_b = if matches!(ins, Instr::Min(..)) {
-                                    vb < va
-                                } else {
-                                    vb > va
-                                };
-                                let src = if take_b { rb } else { ra };
-                                for (c, o) in out.iter_mut().enumerate() {
-                                    *o = s.regs[(4 * src + c) * CHUNK + k];
-                                }
+                        let take_b = if min { vb < va } else { vb > va };
+                        let src = if take_b { rb } else { ra };
+                        if src != dst {
+                            for c in 0..4 {
+                                s.regs[(4 * dst + c) * CHUNK + k] =
+                                    s.regs[(4 * src + c) * CHUNK + k];
                             }
-                            Instr::SmoothMin(_, _, r) => {
-                                let r = r.get();
-                                let h = (r - (va - vb).abs()).max(0.0) / r;
-                                let w = 0.5 * h;
-                                let (lo, hi) = if va <= vb { (ra, rb) } else { (rb, ra) };
-                                out[0] = super::smooth_min(va, vb, r);
-                                for (c, o) in out.iter_mut().enumerate().skip(1) {
-                                    let at = |q: usize| s.regs[(4 * q + c) * CHUNK + k];
-                                    *o = at(lo) * (1.0 - w) + at(hi) * w;
-                                }
-                            }
-                            _ => unreachable!("binary instructions only"),
+                        }
+                    }
+                }
+                Instr::SmoothMin(a, b, r) => {
+                    let (ra, rb) = (reg(a), reg(b));
+                    let r = r.get();
+                    for k in 0..n {
+                        let va = s.regs[4 * ra * CHUNK + k];
+                        let vb = s.regs[4 * rb * CHUNK + k];
+                        let h = (r - (va - vb).abs()).max(0.0) / r;
+                        let w = 0.5 * h;
+                        let (lo, hi) = if va <= vb { (ra, rb) } else { (rb, ra) };
+                        let mut out = [super::smooth_min(va, vb, r), 0.0, 0.0, 0.0];
+                        for (c, o) in out.iter_mut().enumerate().skip(1) {
+                            let at = |q: usize| s.regs[(4 * q + c) * CHUNK + k];
+                            *o = at(lo) * (1.0 - w) + at(hi) * w;
                         }
                         for (c, o) in out.into_iter().enumerate() {
                             s.regs[(4 * dst + c) * CHUNK + k] = o;

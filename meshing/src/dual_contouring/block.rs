@@ -8,7 +8,9 @@
 //! both see the same crossings.
 
 use super::certify::{SEPARATOR_MARGIN, VERTEX_MARGIN};
-use super::crossing::{CrossingScratch, EdgeQuery, refine};
+use super::crossing::{
+    CrossingScratch, EdgeQuery, GROUP_PRUNE_LEN, GroupScratch, refine, refine_grouped,
+};
 use super::patches::{Config, NO_PATCH, Separator, face_edges, patch_table, reachable};
 use super::qef::Qef;
 use crate::grid::GridSpec;
@@ -91,6 +93,9 @@ pub(crate) struct BlockScratch<S> {
     keys: Vec<u32>,
     crossings: Vec<(DVec3, DVec3)>,
     search: CrossingScratch,
+    /// Group of each query (2 × 2 × 2 cells of its lower sample) for long programs.
+    groups: Vec<u32>,
+    grouped: GroupScratch,
     pub field: S,
     /// Times the crossing search, when the caller gave a clock.
     clock: Option<ClockFn>,
@@ -128,6 +133,7 @@ pub(crate) fn build<F: Evaluator>(
     s.ids.resize(3 * nxy * n[2], NO_VERTEX);
     s.queries.clear();
     s.keys.clear();
+    s.groups.clear();
     for k in 0..n[2] {
         for j in 0..n[1] {
             for i in 0..n[0] {
@@ -142,6 +148,9 @@ pub(crate) fn build<F: Evaluator>(
                     o[axis] += 1;
                     s.ids[3 * idx + axis] = s.queries.len() as u32;
                     s.keys.push((3 * idx + axis) as u32);
+                    let cell = |c: usize, m: usize| (c.min(m.saturating_sub(1)) / 2) as u32;
+                    s.groups
+                        .push(cell(i, e[0]) | cell(j, e[1]) << 10 | cell(k, e[2]) << 20);
                     s.queries.push(EdgeQuery {
                         a: point([i, j, k]),
                         b: point(o),
@@ -154,13 +163,27 @@ pub(crate) fn build<F: Evaluator>(
     }
     s.crossings.clear();
     let start = now(s.clock.as_ref());
-    refine(
-        field,
-        &s.queries,
-        &mut s.crossings,
-        &mut s.search,
-        &mut s.field,
-    );
+    if field.len() >= GROUP_PRUNE_LEN && s.queries.len() > 8 {
+        let mut is = F::IntervalScratch::default();
+        refine_grouped(
+            field,
+            &s.queries,
+            &s.groups,
+            &mut s.crossings,
+            &mut s.search,
+            &mut s.grouped,
+            &mut s.field,
+            &mut is,
+        );
+    } else {
+        refine(
+            field,
+            &s.queries,
+            &mut s.crossings,
+            &mut s.search,
+            &mut s.field,
+        );
+    }
     let evaluation_s = now(s.clock.as_ref()) - start;
     let table = patch_table();
     let cells = e[0] * e[1] * e[2];

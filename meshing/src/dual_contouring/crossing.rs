@@ -5,10 +5,16 @@
 //! steps along the edge (the derivative along the edge is the gradient's component), keeping a
 //! bracket from the sample signs and bisecting whenever a step leaves it. All crossings of a block
 //! are refined together, one batched evaluation per step ([`Evaluator::values_gradients`]).
+//!
+//! A block's program is pruned for the whole block, which leaves long programs where many
+//! primitives meet (a faceted sphere keeps every face plane within a few cells). For those,
+//! [`refine_grouped`] prunes once more for each small group of cells and searches that group's
+//! crossings with the shorter program. A pruned program gives the same values, bit for bit, in
+//! its box, so the crossings are exactly those of the block's program.
 
 use super::certify::CROSSING_MARGIN;
 use glam::DVec3;
-use solidkit_kernel::Evaluator;
+use solidkit_kernel::{Aabb, Evaluator};
 
 /// Field evaluations per crossing (the last one gives the normal at the final point).
 pub(crate) const STEPS: usize = 3;
@@ -102,4 +108,57 @@ pub(crate) fn refine<F: Evaluator>(
         let t = s.t[k].clamp(CROSSING_MARGIN, 1.0 - CROSSING_MARGIN);
         (q.a + (q.b - q.a) * t, normal)
     }));
+}
+
+/// Programs at least this long are pruned again per group of crossings ([`refine_grouped`]);
+/// shorter ones cost less to evaluate than to prune.
+pub(crate) const GROUP_PRUNE_LEN: usize = 32;
+
+/// Buffers of the grouped search.
+#[derive(Default)]
+pub(crate) struct GroupScratch {
+    order: Vec<u32>,
+    queries: Vec<EdgeQuery>,
+    found: Vec<(DVec3, DVec3)>,
+}
+
+/// [`refine`] with `field` pruned again for each group of queries (`group[k]` is query `k`'s
+/// group; a group's box is the box of its edges). Same results as [`refine`] on `field`.
+#[allow(clippy::too_many_arguments)]
+pub(crate) fn refine_grouped<F: Evaluator>(
+    field: &F,
+    queries: &[EdgeQuery],
+    group: &[u32],
+    out: &mut Vec<(DVec3, DVec3)>,
+    s: &mut CrossingScratch,
+    g: &mut GroupScratch,
+    fs: &mut F::GradientScratch,
+    is: &mut F::IntervalScratch,
+) {
+    let base = out.len();
+    out.resize(base + queries.len(), (DVec3::ZERO, DVec3::ZERO));
+    g.order.clear();
+    g.order.extend(0..queries.len() as u32);
+    g.order.sort_unstable_by_key(|&k| (group[k as usize], k));
+    for run in g
+        .order
+        .chunk_by(|&a, &b| group[a as usize] == group[b as usize])
+    {
+        g.queries.clear();
+        g.queries.extend(run.iter().map(|&k| queries[k as usize]));
+        let mut b = Aabb::new(g.queries[0].a, g.queries[0].a);
+        for q in &g.queries {
+            b = Aabb::new(b.min.min(q.a).min(q.b), b.max.max(q.a).max(q.b));
+        }
+        field.interval_with(&b, is);
+        let pruned = field.prune(is);
+        g.found.clear();
+        match &pruned {
+            Some(p) => refine(p, &g.queries, &mut g.found, s, fs),
+            None => refine(field, &g.queries, &mut g.found, s, fs),
+        }
+        for (&k, &c) in run.iter().zip(&g.found) {
+            out[base + k as usize] = c;
+        }
+    }
 }

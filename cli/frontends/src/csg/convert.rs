@@ -926,7 +926,9 @@ fn hull_of(stmt: &Stmt, dim: u8, points: &[DVec3]) -> Result<(Geom, Option<Hulla
         points: v.clone(),
         convex: true,
     };
-    Ok((Geom::Solid(polyhedron(stmt, v, f)?), Some(info)))
+    // A hull is convex: the intersection of its face planes evaluates in a dot product per face
+    // and prunes per octree cell, where a mesh solid pays a winding number per sample.
+    Ok((Geom::Solid(faceted_solid(stmt, v, f)?), Some(info)))
 }
 
 /// `hull()` of any children: the convex hull of their points (exact for primitives, polyhedra,
