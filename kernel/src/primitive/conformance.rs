@@ -45,6 +45,28 @@ pub(crate) fn check_shape(shape: &impl Shape, extent: f64) {
             "values_f32 {} vs value {fa} at {a}",
             out[0]
         );
+        // The double-precision batch path gives the scalar values and gradients bit for bit.
+        let (mut v, mut g) = ([0.0; 2], [DVec3::ZERO; 2]);
+        shape.values_gradients(&[a, b], &mut v, &mut g);
+        assert_eq!(
+            v[0].to_bits(),
+            fa.to_bits(),
+            "values_gradients value at {a}"
+        );
+        assert_eq!(
+            v[1].to_bits(),
+            fb.to_bits(),
+            "values_gradients value at {b}"
+        );
+        let ga = shape.gradient(a);
+        assert!(
+            g[0].to_array()
+                .iter()
+                .zip(ga.to_array())
+                .all(|(x, y)| x.to_bits() == y.to_bits()),
+            "values_gradients gradient {} vs {ga} at {a}",
+            g[0]
+        );
         if fa < 0.0 {
             assert!(
                 bbox.expanded(1e-9).contains(a),
