@@ -28,6 +28,7 @@
 //! a cube meshed by dual contouring ends at its 8 corners and 12 triangles.
 
 mod checks;
+mod local;
 mod spatial;
 mod surface;
 
@@ -38,12 +39,15 @@ use crate::IndexedMesh;
 use crate::dual_contouring::qef::Qef;
 use checks::Checker;
 use glam::DVec3;
+use local::LocalField;
 use solidkit_kernel::Evaluator;
 use spatial::Spatial;
-use std::cell::RefCell;
 use std::cmp::Reverse;
 use std::collections::{BinaryHeap, HashMap};
 use surface::Surface;
+
+/// Cells per side of the cubes the field is pruned to.
+const LOCAL_CELLS: f64 = 8.0;
 
 /// Newton steps moving each input vertex onto the zero set (its witness).
 const PROJECTION_STEPS: usize = 4;
@@ -95,14 +99,9 @@ pub fn simplify<E: Evaluator>(
     } else {
         tolerance
     };
-    let scratch = RefCell::new(E::PointScratch::default());
-    let value = |p: DVec3| field.value_with(p, &mut scratch.borrow_mut());
-    let gradient_scratch = RefCell::new(E::GradientScratch::default());
-    let gradient = |p: DVec3| {
-        let (mut v, mut g) = ([0.0], [DVec3::ZERO]);
-        field.values_gradients(&[p], &mut v, &mut g, &mut gradient_scratch.borrow_mut());
-        g[0]
-    };
+    let local = LocalField::new(field, spacing * LOCAL_CELLS);
+    let value = |p: DVec3| local.value(p);
+    let gradient = |p: DVec3| local.gradient(p);
     let witnesses = project(field, &mesh.positions, tolerance);
     let checker = Checker {
         field: &value,
