@@ -10,15 +10,22 @@
 //! - V-faces: each interior vertex of valence `k ≥ 3` becomes a `k`-gon of the corner points
 //!   around it (a valence-2 vertex needs none: its two E-faces meet directly).
 //!
-//! Open meshes: boundary edges and boundary vertices make no E- or V-face, so the boundary of the
-//! result runs along the F-faces and E-faces next to the old boundary (one new boundary loop per
-//! old one; the boundary shrinks towards the interior, as Doo-Sabin surfaces do without extra
-//! boundary rules). Isolated vertices are dropped.
+//! Open meshes (the boundary rule): each boundary edge `(a, b)` gets Chaikin's two points
+//! `3/4 a + 1/4 b` and `1/4 a + 3/4 b` on it; its E-face is the quad of the two corner points at
+//! its ends in its one face and those two points, and each boundary vertex's V-face is the polygon
+//! of the corner points around it closed by the Chaikin points of its two boundary edges next to
+//! it (a triangle at a vertex of one face). The new boundary is Chaikin's corner cutting of the
+//! old boundary polygon, so it converges to the quadratic B-spline of the boundary polygon: it
+//! keeps the midpoints of the boundary edges and straight boundary runs, and an open mesh does not
+//! shrink away from its boundary. Counts per level: `V' = Σdeg + 2E_b`, `E' = Σdeg + 2E + 2E_b`,
+//! `F' = F + E + V` (`E_b` boundary edges; closed meshes: `E_b = 0`). Isolated vertices are
+//! dropped.
 
 use glam::DVec3;
 use std::f64::consts::PI;
 
 use super::SubdivisionError;
+use super::edges::ring_from;
 use crate::halfedge::{HalfEdgeId, HalfEdgeMesh};
 
 /// One level of Doo-Sabin subdivision (see the module docs).
@@ -38,23 +45,52 @@ pub(super) fn step(mesh: &HalfEdgeMesh) -> Result<HalfEdgeMesh, SubdivisionError
         }
         faces.push((first..positions.len() as u32).collect());
     }
+    // Chaikin's points of each boundary half-edge `a → b`: `[3/4 a + 1/4 b, 1/4 a + 3/4 b]`.
+    let mut chaikin = vec![[u32::MAX; 2]; mesh.half_edge_count()];
+    for h in mesh.half_edge_ids() {
+        if mesh.half_edge(h).face.is_none() {
+            let a = mesh.position(mesh.half_edge(h).origin);
+            let b = mesh.position(mesh.target(h));
+            let first = positions.len() as u32;
+            positions.push(0.75 * a + 0.25 * b);
+            positions.push(0.25 * a + 0.75 * b);
+            chaikin[h.index()] = [first, first + 1];
+        }
+    }
     let at = |h: HalfEdgeId| corner[h.index()];
     for h in mesh.half_edge_ids() {
         let he = mesh.half_edge(h);
         let twin = mesh.half_edge(he.twin);
-        if h < he.twin && he.face.is_some() && twin.face.is_some() {
-            faces.push(vec![at(twin.next), at(he.twin), at(he.next), at(h)]);
+        match (he.face.is_some(), twin.face.is_some()) {
+            (true, true) if h < he.twin => {
+                faces.push(vec![at(twin.next), at(he.twin), at(he.next), at(h)]);
+            }
+            // `h = a → b` in its face, its twin `b → a` on the boundary.
+            (true, false) => {
+                let [near_b, near_a] = chaikin[he.twin.index()];
+                faces.push(vec![at(he.next), at(h), near_a, near_b]);
+            }
+            _ => {}
         }
     }
     for v in mesh.vertex_ids() {
-        if mesh.vertex_half_edge(v).is_none() || mesh.is_boundary_vertex(v) {
+        let Some(start) = mesh.vertex_half_edge(v) else {
             continue;
-        }
+        };
         // Outgoing half-edges turn clockwise seen from outside: reversed, the loop is
-        // counter-clockwise.
-        let mut loop_: Vec<u32> = mesh.vertex_outgoing(v).map(at).collect();
+        // counter-clockwise. A boundary vertex's ring starts at its outgoing boundary half-edge
+        // `v → n` and ends at `v → p` (the twin of the incoming boundary half-edge `p → v`).
+        let mut loop_: Vec<u32> = ring_from(mesh, start)
+            .filter(|&h| mesh.half_edge(h).face.is_some())
+            .map(at)
+            .collect();
+        loop_.reverse();
+        if mesh.is_boundary_half_edge(start) {
+            let incoming = mesh.half_edge(start).prev;
+            loop_.push(chaikin[start.index()][0]);
+            loop_.push(chaikin[incoming.index()][1]);
+        }
         if loop_.len() >= 3 {
-            loop_.reverse();
             faces.push(loop_);
         }
     }

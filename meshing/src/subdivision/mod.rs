@@ -1,12 +1,12 @@
 //! Subdivision surfaces on the [`HalfEdgeMesh`]: Catmull-Clark, Loop, modified butterfly and
 //! Doo-Sabin, each applied a given number of levels.
 //!
-//! | scheme | input | output | kind | counts per level (closed mesh) |
+//! | scheme | input | output | kind | counts per level (closed mesh; `E_b` boundary edges) |
 //! |---|---|---|---|---|
 //! | [`catmull_clark()`] ([rules](mod@catmull_clark)) | any polygons | quads | approximating, primal | V' = V + E + F, E' = 2E + Σdeg, F' = Σdeg |
 //! | [`loop_subdivision()`] ([rules](loop_scheme)) | triangles | triangles | approximating, primal | V' = V + E, E' = 2E + 3F, F' = 4F |
 //! | [`butterfly()`] ([rules](mod@butterfly)) | triangles | triangles | interpolating, primal | as Loop |
-//! | [`doo_sabin()`] ([rules](mod@doo_sabin)) | any polygons | any polygons | approximating, dual | V' = Σdeg, E' = 2Σdeg, F' = F + E + V |
+//! | [`doo_sabin()`] ([rules](mod@doo_sabin)) | any polygons | any polygons | approximating, dual | V' = Σdeg, E' = 2Σdeg, F' = F + E + V (open: V' = Σdeg + 2E_b, E' = Σdeg + 2E + 2E_b) |
 //!
 //! Every level is one pass over the faces, edges and vertices of the previous mesh (loops only, no
 //! recursion), producing new positions and face loops from which the next [`HalfEdgeMesh`] is built
@@ -167,8 +167,8 @@ impl Counts {
     }
 
     /// The counts after one level of `scheme`: exact for Catmull-Clark, Loop and butterfly (any
-    /// mesh), exact for Doo-Sabin on closed meshes without valence-2 vertices and an upper bound
-    /// otherwise. Saturates instead of overflowing.
+    /// mesh), exact for Doo-Sabin on meshes (closed or open) without isolated or interior
+    /// valence-2 vertices and an upper bound otherwise. Saturates instead of overflowing.
     pub fn next(self, scheme: Scheme) -> Counts {
         let Counts {
             vertices: v,
@@ -191,13 +191,18 @@ impl Counts {
                 faces: times(4, f),
                 corners: times(12, f),
             },
-            // Face loops of F-faces (c corners), E-faces (4 each) and V-faces (Σ valence = 2E).
-            Scheme::DooSabin => Counts {
-                vertices: c,
-                edges: times(2, c),
-                faces: sum(sum(f, e), v),
-                corners: sum(sum(c, times(4, e)), times(2, e)),
-            },
+            // One vertex per corner and two per boundary edge (`E_b = 2E − c`); face loops of
+            // F-faces (c corners), E-faces (4 each) and V-faces (Σ valence = 2E, plus one corner
+            // per boundary vertex, as many as boundary edges): 8E corners, `E' = c + 2E + 2E_b`.
+            Scheme::DooSabin => {
+                let boundary = times(2, e).saturating_sub(c);
+                Counts {
+                    vertices: sum(c, times(2, boundary)),
+                    edges: sum(sum(c, times(2, e)), times(2, boundary)),
+                    faces: sum(sum(f, e), v),
+                    corners: times(8, e),
+                }
+            }
         }
     }
 }

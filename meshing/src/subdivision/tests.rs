@@ -321,12 +321,7 @@ fn predicted_counts_match() {
             }
             let predicted = Counts::of(start).next(scheme).next(scheme);
             let actual = Counts::of(&subdivide(start, scheme, 2, &Limits::default()).unwrap());
-            if start.is_closed() || scheme != Scheme::DooSabin {
-                assert_eq!(predicted, actual, "{scheme}");
-            } else {
-                // An upper bound on open meshes.
-                assert!(predicted.faces >= actual.faces, "{scheme}");
-            }
+            assert_eq!(predicted, actual, "{scheme}");
         }
     }
 }
@@ -380,4 +375,157 @@ fn sizes_over_the_limit_are_refused_before_any_work() {
         })
     );
     assert_eq!(subdivide(&m, Scheme::CatmullClark, 0, &limits).unwrap(), m);
+}
+
+/// V, E, F of `m`.
+fn vef(m: &HalfEdgeMesh) -> [usize; 3] {
+    [m.vertex_count(), m.edge_count(), m.face_count()]
+}
+
+/// The textbook counts after one level, from V, E, F, the sum of face degrees `Σ` and the
+/// boundary edges `E_b` (0 when closed):
+/// Catmull-Clark `V + E + F`, `2E + Σ`, `Σ`; Loop `V + E`, `2E + 3F`, `4F`;
+/// Doo-Sabin (with the boundary rule) `Σ + 2E_b`, `Σ + 2E + 2E_b`, `F + E + V`.
+fn closed_form(
+    scheme: Scheme,
+    [v, e, f]: [usize; 3],
+    degrees: usize,
+    boundary: usize,
+) -> [usize; 3] {
+    match scheme {
+        Scheme::CatmullClark => [v + e + f, 2 * e + degrees, degrees],
+        Scheme::Loop | Scheme::Butterfly => [v + e, 2 * e + 3 * f, 4 * f],
+        Scheme::DooSabin => [
+            degrees + 2 * boundary,
+            degrees + 2 * e + 2 * boundary,
+            f + e + v,
+        ],
+    }
+}
+
+fn boundary_edges(m: &HalfEdgeMesh) -> usize {
+    m.half_edge_ids()
+        .filter(|&h| m.is_boundary_half_edge(h))
+        .count()
+}
+
+#[test]
+fn counts_after_one_and_two_levels_match_the_closed_forms_with_and_without_boundary() {
+    // A closed cube, an open 3 × 3 quad grid (V 16, E 24, F 9, 12 boundary edges), an open cube
+    // (the top face removed), an open triangle grid and a closed octahedron.
+    let open_cube = {
+        let mut quads = cube_quads();
+        quads.remove(1);
+        mesh(cube_positions(), &quads)
+    };
+    let starts = [
+        (cube(), false),
+        (quad_grid(3), true),
+        (open_cube, true),
+        (triangle_grid(3, |_, _| 0.0), true),
+        (
+            HalfEdgeMesh::from_indexed(&octahedron()).expect("octahedron"),
+            false,
+        ),
+    ];
+    for (start, open) in &starts {
+        assert_eq!(boundary_edges(start) > 0, *open);
+        for scheme in [Scheme::CatmullClark, Scheme::Loop, Scheme::DooSabin] {
+            if scheme.needs_triangles() && !start.is_triangle_mesh() {
+                continue;
+            }
+            let mut m = start.clone();
+            for level in 1..=2 {
+                let expected = closed_form(scheme, vef(&m), sum_of_degrees(&m), boundary_edges(&m));
+                let next = once(&m, scheme);
+                assert_eq!(vef(&next), expected, "{scheme} level {level}, open {open}");
+                assert_eq!(next.euler_characteristic(), start.euler_characteristic());
+                assert_eq!(next.boundary_loop_count(), start.boundary_loop_count());
+                m = next;
+            }
+        }
+    }
+    // The 3 × 3 grid's numbers written out: Catmull-Clark gives the 6 × 6 grid (49, 84, 36) and
+    // then the 12 × 12 grid; Doo-Sabin gives Σ + 2E_b = 36 + 24 vertices.
+    let grid = quad_grid(3);
+    assert_eq!(vef(&grid), [16, 24, 9]);
+    let cc = once(&grid, Scheme::CatmullClark);
+    assert_eq!(vef(&cc), [49, 84, 36]);
+    assert_eq!(vef(&once(&cc, Scheme::CatmullClark)), [169, 312, 144]);
+    assert_eq!(vef(&once(&grid, Scheme::DooSabin)), [60, 108, 49]);
+}
+
+/// The smallest box around the positions used by faces.
+fn extent(m: &HalfEdgeMesh) -> (DVec3, DVec3) {
+    let mut lo = DVec3::splat(f64::INFINITY);
+    let mut hi = DVec3::splat(f64::NEG_INFINITY);
+    for f in m.face_ids() {
+        for v in m.face_vertices(f) {
+            lo = lo.min(m.position(v));
+            hi = hi.max(m.position(v));
+        }
+    }
+    (lo, hi)
+}
+
+#[test]
+fn open_meshes_do_not_shrink_from_their_boundary() {
+    // A flat 4 × 4 sheet: with the boundary rules every scheme keeps the sheet's square outline
+    // (the boundary is a spline of the boundary polygon, whose sides are straight), and keeps the
+    // midpoints of the old boundary edges on the new boundary.
+    for scheme in [Scheme::CatmullClark, Scheme::Loop, Scheme::DooSabin] {
+        let start = if scheme.needs_triangles() {
+            triangle_grid(4, |_, _| 0.0)
+        } else {
+            quad_grid(4)
+        };
+        let mut m = start.clone();
+        for level in 1..=3 {
+            m = once(&m, scheme);
+            let (lo, hi) = extent(&m);
+            assert!(
+                lo.distance(DVec3::ZERO) < 1e-12,
+                "{scheme} level {level}: {lo}"
+            );
+            assert!(
+                hi.distance(DVec3::new(4.0, 4.0, 0.0)) < 1e-12,
+                "{scheme} level {level}: {hi}"
+            );
+        }
+        let once = once(&start, scheme);
+        let on_boundary = |q: DVec3| {
+            once.half_edge_ids()
+                .filter(|&h| once.is_boundary_half_edge(h))
+                .any(|h| {
+                    let (a, b) = once.edge_vertices(h);
+                    let (a, b) = (once.position(a), once.position(b));
+                    // q on the segment ab.
+                    (q - a).cross(b - a).length() < 1e-12
+                        && (q - a).dot(b - a) >= -1e-12
+                        && (q - b).dot(a - b) >= -1e-12
+                })
+        };
+        for h in start
+            .half_edge_ids()
+            .filter(|&h| start.is_boundary_half_edge(h))
+        {
+            let (a, b) = start.edge_vertices(h);
+            let mid = 0.5 * (start.position(a) + start.position(b));
+            assert!(on_boundary(mid), "{scheme}: {mid}");
+        }
+    }
+    // Doo-Sabin on a bent open surface (the cube without its top): the rim stays the square of
+    // the old rim's edge midpoints cut at the corners, at the old rim's height.
+    let mut quads = cube_quads();
+    quads.remove(1);
+    let open_cube = mesh(cube_positions(), &quads);
+    let next = once(&open_cube, Scheme::DooSabin);
+    let top = extent(&open_cube).1.z;
+    for h in next
+        .half_edge_ids()
+        .filter(|&h| next.is_boundary_half_edge(h))
+    {
+        let p = next.position(next.half_edge(h).origin);
+        assert!((p.z - top).abs() < 1e-12, "{p}");
+    }
 }
