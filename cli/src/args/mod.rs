@@ -326,6 +326,11 @@ pub struct CheckArgs {
     /// Skip the self-intersection count (a self-intersecting mesh then passes).
     #[arg(long)]
     pub no_self_intersections: bool,
+    /// Also report V, E, F and V − E + F of the polygon mesh as the file has its faces (OBJ, OFF
+    /// and PLY quads, pentagons… counted as one face each, vertex indices as in the file, before
+    /// any --weld), beside the counts of its triangles.
+    #[arg(long)]
+    pub polygons: bool,
     /// Also write a PNG of the mesh in grey with its defects in colour and a legend.
     #[arg(long, value_name = "PNG")]
     pub render: Option<PathBuf>,

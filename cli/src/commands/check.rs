@@ -1,6 +1,7 @@
 //! `solidkit check`: read a mesh (welded within `--weld EPS` if asked), report its topology
 //! under a one-line verdict with the coordinates of the first offenders, exit 1 unless it bounds
-//! a solid (closed oriented manifold, no self-intersection).
+//! a solid (closed oriented manifold, no self-intersection). `--polygons` adds the counts of the
+//! polygon mesh as the file has its faces (V, E, F of quads and pentagons, not of their triangles).
 
 use crate::args::CheckArgs;
 use crate::output::{out, outln};
@@ -8,12 +9,12 @@ use crate::report;
 use anyhow::{Result, anyhow};
 use serde_json::json;
 use solidkit_meshing::IndexedMesh;
-use solidkit_meshing::io::read_mesh;
+use solidkit_meshing::io::{read_mesh, read_polygon_mesh};
 use solidkit_meshing::render::defects::{defect_camera, render_defects};
 use solidkit_meshing::render::defects_ply::write_defects_ply;
 use solidkit_meshing::render::png_out::write_png;
 use solidkit_meshing::repair::weld_mesh;
-use solidkit_meshing::topology::DefectItems;
+use solidkit_meshing::topology::{DefectItems, PolygonCounts};
 use solidkit_meshing::{ReportOptions, TopologyReport};
 use std::path::Path;
 
@@ -21,6 +22,12 @@ use std::path::Path;
 /// 1 otherwise.
 pub fn run(a: &CheckArgs) -> Result<u8> {
     let mut mesh = read_mesh(&a.mesh)?;
+    let polygons = if a.polygons {
+        let p = read_polygon_mesh(&a.mesh)?;
+        Some(PolygonCounts::of(p.positions.len(), &p.faces))
+    } else {
+        None
+    };
     let mut welded = None;
     if let Some(eps) = a.weld {
         let w = weld_mesh(&mesh, eps).map_err(|e| anyhow!("{}: {e}", a.mesh.display()))?;
@@ -52,11 +59,17 @@ pub fn run(a: &CheckArgs) -> Result<u8> {
             extra.push(("weld", json!(eps)));
             extra.push(("vertices_welded", json!(merged)));
         }
+        if let Some(p) = &polygons {
+            extra.push(("polygons", serde_json::to_value(p)?));
+        }
         outln!("{}", report::to_json(&r, &extra)?)?;
     } else {
         outln!("verdict: {}", r.verdict())?;
         if let Some((eps, merged)) = welded {
             outln!("welded: {merged} vertices merged within {eps}")?;
+        }
+        if let Some(p) = &polygons {
+            outln!("{}", p.to_text())?;
         }
         out!("{}", r.to_text())?;
         out!("{}", r.offender_positions_text(&mesh))?;

@@ -28,6 +28,7 @@
 mod defects;
 mod edges;
 mod measures;
+mod polygons;
 mod shells;
 mod text;
 mod union_find;
@@ -45,6 +46,7 @@ use rayon::prelude::*;
 
 pub use defects::{DefectItems, MAX_DEFECT_PAIRS};
 pub(crate) use edges::{CornerLoops, EdgeKind, EdgeTable};
+pub use polygons::PolygonCounts;
 pub use verdict::{MAX_LOCATED, OffenderPositions};
 pub(crate) use vertices::fan_counts;
 
