@@ -1,6 +1,7 @@
 //! `solidkit subdivide` through the real binary: polygon files in and out (quads stay quads in
 //! OBJ, OFF and PLY, triangles in STL), the report, one-line errors with exit code 2 and no output
-//! file on failure; and `subdivide` nodes through `solidkit mesh` from JSON and Rhai.
+//! file on failure; `subdivide` nodes through `solidkit mesh` from JSON and Rhai; and `check
+//! --polygons` on the Platonic table; `dual` from Rhai and JSON.
 
 use solidkit_meshing::io::{read_mesh, read_polygon_mesh};
 use solidkit_tests::{fixture, path_str, success_json};
@@ -151,4 +152,118 @@ fn subdivide_nodes_mesh_from_json_and_rhai() {
         volumes.push(r["volume"].as_f64().unwrap());
     }
     assert_eq!(volumes[0], volumes[1]);
+}
+
+/// The Platonic table of the notes (V, E, F of the polygon faces) for the five solids and their
+/// duals, through files written by solidkit (OBJ, OFF and PLY in turn) and `check --polygons`.
+#[test]
+fn check_polygons_reports_the_platonic_table() {
+    use solidkit_kernel::polyhedra::{PlatonicKind, PlatonicSize, Polyhedron};
+    use solidkit_meshing::io::{PolygonMesh, write_polygon_mesh};
+    let table = [
+        (PlatonicKind::Tetrahedron, [4, 6, 4], 3),
+        (PlatonicKind::Cube, [8, 12, 6], 4),
+        (PlatonicKind::Octahedron, [6, 12, 8], 3),
+        (PlatonicKind::Dodecahedron, [20, 30, 12], 5),
+        (PlatonicKind::Icosahedron, [12, 30, 20], 3),
+    ];
+    let dir = tempfile::tempdir().unwrap();
+    let formats = ["obj", "off", "ply"];
+    for (k, (kind, [v, e, f], sides)) in table.into_iter().enumerate() {
+        let solid = Polyhedron::platonic(kind, PlatonicSize::Edge(1.0)).unwrap();
+        // The dual swaps V and F: its faces have as many sides as the solid's vertex valence.
+        let valence = 2 * e / v;
+        for (p, counts, sides, what) in [
+            (solid.clone(), [v, e, f], sides, "solid"),
+            (solid.dual().unwrap(), [f, e, v], valence, "dual"),
+        ] {
+            let ext = formats[(2 * k + usize::from(what == "dual")) % 3];
+            let path = dir.path().join(format!("{}_{what}.{ext}", kind.name()));
+            let mesh = PolygonMesh::new(p.vertices().to_vec(), p.faces().to_vec());
+            write_polygon_mesh(&path, &mesh).unwrap();
+            let o = solidkit(&["check", path_str(&path), "--polygons", "--json"]);
+            let r = success_json(&o);
+            let got = &r["polygons"];
+            let name = format!("{} {what} ({ext})", kind.name());
+            assert_eq!(
+                [&got["vertices"], &got["edges"], &got["faces"]],
+                counts.map(serde_json::Value::from).each_ref(),
+                "{name}"
+            );
+            assert_eq!(got["euler_characteristic"], 2, "{name}");
+            assert_eq!(got["largest_face"], sides, "{name}");
+            // The triangle counts beside them: each face of n sides is n − 2 triangles.
+            let triangles = counts[2] * (sides - 2);
+            assert_eq!(r["faces"], triangles, "{name}");
+            assert_eq!(r["euler_characteristic"], 2, "{name}");
+            let polygons = if sides > 3 { counts[2] } else { 0 };
+            assert_eq!(got["polygons"], polygons, "{name}");
+            // The text report has the same line.
+            let o = solidkit(&["check", path_str(&path), "--polygons"]);
+            let text = String::from_utf8_lossy(&o.stdout);
+            let line = format!(
+                "polygon mesh: V {}, E {}, F {}, V - E + F = 2",
+                counts[0], counts[1], counts[2]
+            );
+            assert!(text.contains(&line), "{name}: {text}");
+        }
+    }
+    // Without the flag there is no polygon line, and a bad file is still a located error, exit 2.
+    let path = dir.path().join("cube_solid.off");
+    let o = solidkit(&["check", path_str(&path)]);
+    assert!(!String::from_utf8_lossy(&o.stdout).contains("polygon mesh"));
+    let bad = dir.path().join("bad.obj");
+    std::fs::write(&bad, "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 9\n").unwrap();
+    let o = solidkit(&["check", path_str(&bad), "--polygons"]);
+    assert_eq!(
+        o.status.code(),
+        Some(2),
+        "{}",
+        String::from_utf8_lossy(&o.stderr)
+    );
+}
+
+/// `dual(solid)` in Rhai and the `dual` node in JSON mesh to the same solid: the octahedron dual
+/// to a cube of edge 2 (circumradius 1, volume 4/3).
+#[test]
+fn dual_meshes_from_rhai_and_json() {
+    let dir = tempfile::tempdir().unwrap();
+    let rhai = dir.path().join("dual.rhai");
+    std::fs::write(
+        &rhai,
+        r#"dual(node(#{type: "platonic", solid: "cube", edge: 2.0}))"#,
+    )
+    .unwrap();
+    let json = dir.path().join("dual.json");
+    let o = solidkit(&["convert", path_str(&rhai), "-o", path_str(&json)]);
+    assert_eq!(
+        o.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&o.stderr)
+    );
+    let tree = std::fs::read_to_string(&json).unwrap();
+    assert!(
+        tree.contains(r#""type": "dual", "child": {"type": "platonic""#),
+        "{tree}"
+    );
+    let mut volumes = Vec::new();
+    for input in [&rhai, &json] {
+        let o = solidkit(&["mesh", path_str(input), "--resolution", "96", "--json"]);
+        let r = success_json(&o);
+        assert_eq!(
+            (r["closed"].clone(), r["manifold"].clone()),
+            (true.into(), true.into())
+        );
+        let v = r["volume"].as_f64().unwrap();
+        assert!((v - 4.0 / 3.0).abs() < 0.02 * 4.0 / 3.0, "{v}");
+        volumes.push(v);
+    }
+    assert_eq!(volumes[0], volumes[1]);
+    // A sphere has no dual: a one-line error, exit 2.
+    std::fs::write(&rhai, "dual(sphere(1.0))").unwrap();
+    let o = solidkit(&["mesh", path_str(&rhai), "--resolution", "32"]);
+    assert_eq!(o.status.code(), Some(2));
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert!(err.contains("dual needs a polyhedron"), "{err}");
 }

@@ -1,7 +1,8 @@
 //! Acceptance of the polyhedra family (issue 5): exact Platonic solids, duals and prisms (counts,
 //! Euler's formula, closed oriented manifolds with exact volumes), the same solids meshed at 128³
-//! through their fields, and an OBJ polyhedron in a CSG difference against manifold3d's exact
-//! Boolean (fixtures/reference/polyhedra.json, made by fixtures/reference/make_polyhedra_refs.py).
+//! through their fields (the duals as `dual` nodes, and the dual compound fixture), and an OBJ
+//! polyhedron in a CSG difference against manifold3d's exact Boolean
+//! (fixtures/reference/polyhedra.json, made by fixtures/reference/make_polyhedra_refs.py).
 
 use glam::{DVec2, DVec3};
 use solidkit_kernel::IndexedMesh;
@@ -208,14 +209,30 @@ fn platonic_solids_and_their_duals_mesh_at_128() {
         let solid = Solid::platonic(kind, PlatonicSize::Edge(edge));
         solid.validate().unwrap();
         check_meshed(&solid, unit_volume * edge.powi(3), kind.name());
-        // The dual as a mesh solid (exact distance to its triangles).
-        let dual = Polyhedron::platonic(kind, PlatonicSize::Edge(edge))
-            .unwrap()
-            .dual()
-            .unwrap();
-        let what = format!("dual of {}", kind.name());
-        check_meshed(&Solid::from_polyhedron(&dual), dual.volume(), &what);
+        // The `dual` node (a mesh solid: exact distance to the dual's triangles), against the
+        // closed-form volume of the dual kind at the dual's edge.
+        let text = format!(
+            r#"{{"type": "dual", "child": {{"type": "platonic", "solid": "{}", "edge": {edge}}}}}"#,
+            kind.name()
+        );
+        let dual = json::from_str(&text).unwrap();
+        dual.validate().unwrap();
+        let exact = kind.dual().unit_measures().volume * kind.dual_edge(edge).powi(3);
+        check_meshed(&dual, exact, &format!("dual of {}", kind.name()));
     }
+}
+
+#[test]
+fn the_dual_compound_fixture_meshes_to_its_exact_volume() {
+    // A cube [-1, 1]³ and its dual octahedron scaled to |x| + |y| + |z| ≤ 2: the octahedron
+    // (32/3) adds to the cube (8) all but the part inside the cube, the cube minus its 8 corner
+    // tetrahedra (8 − 8/6): 8 + 32/3 − 20/3 = 12.
+    let tree = fixture("polyhedra/dual_compound.json");
+    let text = std::fs::read_to_string(&tree).unwrap();
+    let solid = json::from_str_with(&text, &FileMeshResolver::for_tree_file(&tree)).unwrap();
+    let (_, r) = mesh(&solid, RESOLUTION);
+    assert_closed_genus(&r, 0, "dual compound");
+    assert!(rel_err(r.volume, 12.0) < 0.01, "{}", r.volume);
 }
 
 #[test]

@@ -18,7 +18,8 @@
 //! counter-clockwise from outside), `mesh` (path of an STL/OBJ/PLY/OFF file, loaded through a
 //! [`MeshResolver`]: see [`from_str_with`]), `prism` (polygon: [[x, y], …], optional holes,
 //! direction), `subdivide` (scheme: catmull-clark | loop | butterfly | doo-sabin, levels, and a
-//! polyhedral `child`; computed by the [`MeshResolver`]).
+//! polyhedral `child`; computed by the [`MeshResolver`]), `dual` (a convex polyhedral `child`:
+//! one vertex per face centroid, one face per vertex).
 //! Quadrics: `ellipsoid` (radii), `quadric` (coefficients {a, b, c, f, g, h, p, q, r, d}, bounds),
 //! `elliptic_cylinder` / `elliptic_cone` / `elliptic_paraboloid` / `hyperbolic_paraboloid`
 //! (radii [a, b], bounds), `hyperboloid_one_sheet` / `hyperboloid_two_sheets` (radii, bounds);

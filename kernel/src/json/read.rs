@@ -15,6 +15,7 @@ use glam::DVec3;
 mod blob;
 mod curve;
 mod curve_profile;
+mod dual;
 mod expr;
 mod heightfield;
 mod polyhedra;
@@ -178,7 +179,7 @@ impl<'a> Reader<'a> {
                     .collect()
             }
             "translate" | "rotate" | "scale" | "mirror" | "affine" | "offset" | "shell"
-            | "subdivide" => {
+            | "subdivide" | "dual" => {
                 vec![(
                     "child".to_string(),
                     self.required(index, entries, "child", &p)?,
@@ -239,6 +240,9 @@ impl<'a> Reader<'a> {
         };
         if ty == "subdivide" {
             return params.subdivide(children);
+        }
+        if ty == "dual" {
+            return params.dual(children);
         }
         let (kind, allowed): (NodeKind, &[&str]) = match ty {
             "union" => (NodeKind::Union, &["children"]),
@@ -506,7 +510,9 @@ impl Params<'_, '_> {
             | "hyperboloid_two_sheets" => self.quadric_family(ty)?,
             "blob" => self.blob()?,
             "heightfield" => self.heightfield()?,
-            "extrude" | "revolve" | "sweep" | "loft" | "ruled" => self.sweep_family(ty)?,
+            "extrude" | "revolve" | "sweep" | "loft" | "ruled" | "ruled_surface" => {
+                self.sweep_family(ty)?
+            }
             "platonic" => self.platonic()?,
             "polyhedron" => self.polyhedron()?,
             "mesh" => self.mesh_file()?,

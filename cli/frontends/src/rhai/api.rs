@@ -1,6 +1,6 @@
 //! The functions and methods scripts call: primitives, Booleans (functions on arrays and the
 //! operators `|`, `&`, `-`), transforms, blends, `expr` (formula solids), `node(map)` for every
-//! other family, `export`.
+//! other family, `dual` (of a convex polyhedral leaf), `export`.
 
 use super::node;
 use super::shape::{Fallible, Shape, fail, num, num_or_vec3, shapes, vec3};
@@ -55,6 +55,15 @@ pub(super) fn register(
     booleans(engine, Budget(max_nodes));
     transforms(engine, Budget(max_nodes));
     blends(engine, Budget(max_nodes));
+    let dual_resolver = resolver.clone();
+    // `dual(solid)`: the dual of a convex polyhedral leaf (platonic, polyhedron, prism, mesh).
+    engine.register_fn("dual", move |s: Shape| -> Fallible<Shape> {
+        super::check_deadline()?;
+        match s.solid.dual(dual_resolver.as_ref()) {
+            Ok(solid) => Ok(Shape { solid, nodes: 1 }),
+            Err(e) => fail(format!("dual: {e}")),
+        }
+    });
     engine.register_fn("node", move |m: Map| -> Fallible<Shape> {
         super::check_deadline()?;
         let shape = node::from_map(m, resolver.as_ref(), max_nodes)?;

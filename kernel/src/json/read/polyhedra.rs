@@ -119,9 +119,9 @@ impl Params<'_, '_> {
                 _ => (key_at("faces"), e.to_string()),
             },
             MeshSolidError::Load { .. } => (key_at("path"), e.to_string()),
-            MeshSolidError::NotPolyhedral { .. } | MeshSolidError::Subdivision(_) => {
-                (key_at("child"), e.to_string())
-            }
+            MeshSolidError::NotPolyhedral { .. }
+            | MeshSolidError::NotDualizable { .. }
+            | MeshSolidError::Subdivision(_) => (key_at("child"), e.to_string()),
         };
         self.fail(at, &key, message)
     }

@@ -1,7 +1,7 @@
 //! Writing the polyhedral node types back as they were read: `platonic` with the size key that
 //! was given, `polyhedron` with its vertices and faces, `mesh` with its path, `prism` with its
 //! polygon, holes (when there are any) and direction, `subdivide` with its scheme, levels and
-//! polyhedral child.
+//! polyhedral child, `dual` with its polyhedral child.
 
 use super::{num, string, vec3};
 use crate::primitive::{MeshSolid, MeshSource, Platonic};
@@ -55,6 +55,11 @@ pub(super) fn mesh(m: &MeshSolid) -> String {
             format!("\"scheme\": \"{scheme}\", \"levels\": {levels}, \"child\": {{{child}}}")
         }
         MeshSource::Surface(spec) => super::surface::members(spec),
+        MeshSource::Dual { child } => {
+            // The child is a polyhedral leaf (never itself a dual): one fixed nesting level.
+            let child = super::members(&NodeKind::Primitive((**child).clone()));
+            format!("\"child\": {{{child}}}")
+        }
     }
 }
 

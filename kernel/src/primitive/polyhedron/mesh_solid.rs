@@ -53,6 +53,14 @@ pub enum MeshSolidError {
         /// The JSON type of the child that was given.
         found: &'static str,
     },
+    /// The child of a `dual` node is not a polyhedral primitive.
+    #[error(
+        "dual needs a polyhedron, mesh, prism or platonic child (the dual of a dual is the original scaled: use it instead), found {found}"
+    )]
+    NotDualizable {
+        /// The JSON type of the child that was given.
+        found: &'static str,
+    },
     /// The subdivision failed (non-manifold child, a non-triangle child for Loop or butterfly,
     /// too many faces, no subdivision hook...).
     #[error("{0}")]
@@ -89,6 +97,12 @@ pub enum MeshSource {
     /// A parametric surface closed into a solid (JSON `bezier_patch`, `bspline_surface`,
     /// `nurbs_surface`, `param_surface`, `bezier_triangle`, `pn_triangles`).
     Surface(Box<crate::surface::SurfaceSpec>),
+    /// The dual of a convex polyhedral primitive (JSON `dual`).
+    Dual {
+        /// The polyhedral child as written in the tree (`polyhedron`, `mesh`, `prism` or
+        /// `platonic`; never itself a dual or a subdivision, so this nests one level only).
+        child: Box<Primitive>,
+    },
 }
 
 impl MeshSource {
@@ -100,6 +114,7 @@ impl MeshSource {
             MeshSource::Prism(_) => "prism",
             MeshSource::Subdivided { .. } => "subdivide",
             MeshSource::Surface(s) => s.kind.name(),
+            MeshSource::Dual { .. } => "dual",
         }
     }
 }
@@ -187,7 +202,7 @@ impl MeshSolid {
         &self.source
     }
 
-    /// The JSON node type (`polyhedron`, `mesh` or `prism`).
+    /// The JSON node type (`polyhedron`, `mesh`, `prism`, `subdivide` or `dual`).
     pub fn name(&self) -> &'static str {
         self.source.name()
     }
@@ -207,6 +222,13 @@ impl MeshSolid {
     /// the winding number is at least ½, and its field is discontinuous away from the triangles.
     pub fn open_edges(&self) -> usize {
         self.open_edges
+    }
+
+    /// The unsigned distance from `p` to the triangles and the nearest point (no winding number:
+    /// cheaper than the signed field where the sign is not needed).
+    pub fn unsigned_distance(&self, p: DVec3) -> (f64, DVec3) {
+        let near = self.tree.nearest(p);
+        (near.distance2.sqrt(), near.point)
     }
 
     /// The generalised winding number at `p` (about 1 inside, 0 outside).

@@ -12,6 +12,7 @@
 //! `field_error` is the distance between the field's zero set and the exact surface.
 
 mod build;
+mod dual;
 mod mesh_solid;
 mod nearest;
 mod platonic;
@@ -22,6 +23,8 @@ mod subdivided;
 mod tree;
 mod winding;
 
+#[cfg(test)]
+mod dual_tests;
 #[cfg(test)]
 mod json_tests;
 #[cfg(test)]

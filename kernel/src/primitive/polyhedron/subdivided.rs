@@ -42,7 +42,9 @@ impl MeshSolid {
                     owned = prism.to_polyhedron()?;
                     faces_of(&owned)
                 }
-                MeshSource::Subdivided { .. } | MeshSource::Surface(_) => {
+                MeshSource::Subdivided { .. }
+                | MeshSource::Surface(_)
+                | MeshSource::Dual { .. } => {
                     return Err(not_polyhedral());
                 }
             },
