@@ -5,7 +5,8 @@
 //!
 //! Exact volumes: Pappus's theorem for revolutions and the torus sweep; prism volume `A·h` for
 //! twisted extrusions (a twist keeps every slice's area); `A·h·(1 + s + s²)/3` for a scaled one;
-//! `πr²h/3` and `πr²h` for the ruled cone and cylinder; the prismatoid formula for the loft (its
+//! `πr²h/3` and `πr²h` for the ruled cone and cylinder (and `ruled_surface` cylinders in any
+//! plane; Steiner's formula for a thickened flat sheet); the prismatoid formula for the loft (its
 //! slice area is quadratic in height, so Simpson's rule is exact); `A·L` for tubes along open
 //! curves, with the curve length `L` by 24-point Gauss–Legendre quadrature on nearly straight spans
 //! (`solidkit_kernel::curve::arc_length`, relative error ~1e-14), since a spline has no closed form.
@@ -154,6 +155,50 @@ fn ruled_cone_with_an_apex_and_oblique_cylinder() {
 }
 
 /// Shoelace area of a polygon.
+#[test]
+fn ruled_surfaces_in_any_plane_and_thickened_mesh_to_their_volumes() {
+    // Two circles of radius 0.5 in the planes x = ±1: a cylinder along x. These fields measure
+    // the distance to a tessellation through a BVH (microseconds a sample), so they mesh at 96.
+    let r = check_bounds("ruled_surface_cylinder_x.json");
+    let exact = PI * 0.25 * 2.0;
+    assert!(rel_err(r.volume, exact) < 0.01, "{} vs {exact}", r.volume);
+    // The saddle z = xy over the unit square thickened to 2r: the tube formula, 2rA + (π/2) r² P
+    // + (4/3) π r³ with the saddle's area A = ∫∫ √(1 + x² + y²) = 1.2807893 and its rim
+    // P = 2 + 2√2, up to curvature terms of order r³ (below 10⁻³ of it).
+    let r = check_bounds("ruled_surface_saddle.json");
+    let (rr, saddle_area, rim) = (0.05, 1.280_789_3, 2.0 + 2.0 * 2f64.sqrt());
+    let tube = 2.0 * rr * saddle_area + 0.5 * PI * rr * rr * rim + 4.0 / 3.0 * PI * rr.powi(3);
+    assert!(rel_err(r.volume, tube) < 0.015, "{} vs {tube}", r.volume);
+    // A flat 2 × 1 rectangle between two segments thickened to 2r: Steiner's formula,
+    // 2rA + (π/2) r² P + (4/3) π r³.
+    let text = r#"{"type": "ruled_surface", "thickness": 0.2,
+        "first": {"type": "bezier", "points": [[0, 0, 0], [2, 0, 0]]},
+        "second": {"type": "bezier", "points": [[0, 1, 0], [2, 1, 0]]}}"#;
+    let solid = solidkit_kernel::json::from_str(text).unwrap();
+    let (_, r) = mesh(&solid, RESOLUTION);
+    assert!(
+        r.is_closed_manifold() && r.shells == 1 && r.genus == Some(0),
+        "{r:?}"
+    );
+    let rr = 0.1;
+    let exact = 2.0 * rr * 2.0 + 0.5 * PI * rr * rr * 6.0 + 4.0 / 3.0 * PI * rr.powi(3);
+    assert!(rel_err(r.volume, exact) < 0.01, "{} vs {exact}", r.volume);
+}
+
+/// The resolution of the `ruled_surface` tests.
+const RULED_RESOLUTION: usize = 96;
+
+/// Meshes a fixture at [`RULED_RESOLUTION`]: one closed shell of genus 0; the report.
+fn check_bounds(fixture: &str) -> TopologyReport {
+    let solid = load_tree(&format!("sweeps/{fixture}"));
+    let (_, r) = mesh(&solid, RULED_RESOLUTION);
+    assert!(
+        r.is_closed_manifold() && r.shells == 1 && r.genus == Some(0),
+        "{fixture}: {r:?}"
+    );
+    r
+}
+
 fn area(points: &[DVec2]) -> f64 {
     let n = points.len();
     0.5 * (0..n)

@@ -105,6 +105,7 @@ fn members(kind: &NodeKind) -> String {
             Primitive::Sweep(s) => sweep::sweep(s),
             Primitive::Loft(l) => sweep::loft(l),
             Primitive::Ruled(r) => sweep::ruled(r),
+            Primitive::RuledSurface(r) => sweep::ruled_surface(r),
             Primitive::Expr(e) => format!(
                 "\"formula\": {}, \"bounds\": [{}, {}]",
                 string(e.formula()),

@@ -16,6 +16,7 @@
 //! | blob (metaballs) | `T − Σ bₖ exp(−aₖ rₖ²)` | `Σ |bₖ| √(2aₖ) e^{−1/2}` | 0 |
 //! | height field | `(z − h) / √(1 + L_h²)` with the box sides | 1 | 0 (h as interpolated) |
 //! | extrude, revolve, sweep, loft, ruled | exact distance where cheap, else slice distance / L | see each type | 0 |
+//! | ruled_surface | exact distance to its tessellation (thick: minus t/2) | 1 | the chord error |
 //! | expr (formula) | `max(g(clamp p), d_box)`: a distance only if `g` is | `max(1, L_g)`, from interval derivatives | 0 |
 
 pub mod blob;
@@ -47,7 +48,7 @@ pub use polyhedron::{
 pub use polyhedron::{SubdivisionInput, SubdivisionRequest, SubdivisionScheme};
 pub use quadric::{Ellipsoid, Quadric};
 pub use sphere::Sphere;
-pub use sweep::{Extrude, Loft, Revolve, Ruled, Sweep};
+pub use sweep::{Extrude, Loft, Revolve, Ruled, RuledSurface, Sweep};
 pub use torus::Torus;
 
 use crate::{Aabb, Interval};
@@ -259,6 +260,8 @@ pub enum Primitive {
     Loft(Arc<Loft>),
     /// The solid bounded by the ruled surface between two closed plane curves.
     Ruled(Arc<Ruled>),
+    /// The solid of the ruled surface between any two curves, capped or thickened.
+    RuledSurface(Arc<RuledSurface>),
     /// A formula `g(x, y, z) ≤ 0` cut by a box.
     Expr(Arc<Expr>),
 }
@@ -284,6 +287,7 @@ macro_rules! dispatch {
             Primitive::Sweep($s) => $e,
             Primitive::Loft($s) => $e,
             Primitive::Ruled($s) => $e,
+            Primitive::RuledSurface($s) => $e,
             Primitive::Expr($s) => $e,
         }
     };
@@ -311,6 +315,7 @@ impl Primitive {
             Primitive::Sweep(_) => "sweep",
             Primitive::Loft(_) => "loft",
             Primitive::Ruled(_) => "ruled",
+            Primitive::RuledSurface(_) => "ruled_surface",
             Primitive::Expr(_) => "expr",
         }
     }

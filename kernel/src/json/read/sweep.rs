@@ -1,6 +1,7 @@
 //! Reading the sweep family: `extrude` (profile, height, optional twist in degrees and scale),
 //! `revolve` (profile, optional angle in degrees, default 360), `sweep` (profile, path), `loft`
-//! (bottom and top profiles, height) and `ruled` (bottom and top curves).
+//! (bottom and top profiles, height), `ruled` (bottom and top curves) and `ruled_surface` (first
+//! and second curves, optional thickness and samples).
 //!
 //! Profiles are objects: `{"type": "circle", "radius": r, "center": [x, y]}`,
 //! `{"type": "rectangle", "size": [w, h] or s, "center": [x, y]}` (centres optional, default the
@@ -12,7 +13,7 @@ use super::super::document::Value;
 use super::{Params, R};
 use crate::curve::{Curve, Parametric};
 use crate::primitive::sweep::SweepError;
-use crate::primitive::{Extrude, Loft, Primitive, Revolve, Ruled, Sweep};
+use crate::primitive::{Extrude, Loft, Primitive, Revolve, Ruled, RuledSurface, Sweep};
 use crate::profile::{Circle, Profile, ProfileError, Rectangle};
 use glam::{DVec2, DVec3};
 use std::sync::Arc;
@@ -66,6 +67,37 @@ impl Params<'_, '_> {
                 )
                 .map_err(located)?;
                 (Primitive::Loft(Arc::new(l)), &["bottom", "top", "height"])
+            }
+            "ruled_surface" => {
+                let thickness = match super::find(self.entries, "thickness") {
+                    Some(i) => Some(self.number_at(i, "thickness")?),
+                    None => None,
+                };
+                let samples = match super::find(self.entries, "samples") {
+                    Some(i) => {
+                        let x = self.number_at(i, "samples")?;
+                        if !(x.fract() == 0.0 && (3.0..=4096.0).contains(&x)) {
+                            return Err(self.fail(
+                                i,
+                                "samples",
+                                format!("expected a whole number from 3 to 4096, found {x}"),
+                            ));
+                        }
+                        Some(x as usize)
+                    }
+                    None => None,
+                };
+                let r = RuledSurface::new(
+                    self.sweep_curve("first")?,
+                    self.sweep_curve("second")?,
+                    thickness,
+                    samples,
+                )
+                .map_err(located)?;
+                (
+                    Primitive::RuledSurface(Arc::new(r)),
+                    &["first", "second", "thickness", "samples"],
+                )
             }
             _ => {
                 let r = Ruled::new(self.sweep_curve("bottom")?, self.sweep_curve("top")?)

@@ -4,7 +4,7 @@
 
 use super::{num, vec3};
 use crate::curve::Curve;
-use crate::primitive::{Extrude, Loft, Revolve, Ruled, Sweep};
+use crate::primitive::{Extrude, Loft, Revolve, Ruled, RuledSurface, Sweep};
 use crate::profile::Profile;
 use glam::DVec2;
 
@@ -146,4 +146,21 @@ pub(super) fn ruled(r: &Ruled) -> String {
         curve(r.bottom()),
         curve(r.top())
     )
+}
+
+/// The members of a `ruled_surface` node (`thickness` and `samples` when given or not the
+/// default).
+pub(super) fn ruled_surface(r: &RuledSurface) -> String {
+    let mut s = format!(
+        "\"first\": {}, \"second\": {}",
+        curve(r.first()),
+        curve(r.second())
+    );
+    if let Some(t) = r.thickness() {
+        s += &format!(", \"thickness\": {}", num(t));
+    }
+    if r.samples() != RuledSurface::DEFAULT_SAMPLES {
+        s += &format!(", \"samples\": {}", r.samples());
+    }
+    s
 }
