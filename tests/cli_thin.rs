@@ -139,3 +139,33 @@ fn refine_rejects_bad_factors() {
         );
     }
 }
+
+/// A wedge whose edge runs along a brick border (a box cut by a plane at 68°, its bottom face on
+/// sample points at resolution 256) is not a lost feature: the cells along the edge see the
+/// next brick's inside samples (a regression: 256 "lost" cells, a warning and a refinement that
+/// took 20 times as long). Any resolution from 250 to 260: no warning, no refinement, one shell.
+#[test]
+fn wedges_along_brick_borders_are_not_lost_features() {
+    let dir = tempfile::tempdir().expect("temp dir");
+    let root = format!(
+        r#"{{"type":"intersection","children":[{},{{"type":"plane","normal":[0.927,0,0.375],"offset":0.2}}]}}"#,
+        boxed([2.0; 3])
+    );
+    let path = write(&dir, "wedge.json", &root);
+    for n in 250..=260 {
+        let res = n.to_string();
+        let args = [
+            "mesh",
+            path_str(&path),
+            "--resolution",
+            &res,
+            "--json",
+            "--no-self-intersections",
+        ];
+        let r = success_json(&run_cli(BIN, &args));
+        assert_eq!(r["warnings"], Value::Array(vec![]), "resolution {n}: {r}");
+        assert_eq!(r["refinement"], Value::from(1), "resolution {n}");
+        assert_eq!(r["thin"]["detached"], Value::from(0), "resolution {n}");
+        assert_eq!(r["shells"], Value::from(1), "resolution {n}");
+    }
+}

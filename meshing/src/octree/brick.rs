@@ -18,6 +18,7 @@ use crate::marching_cubes::table::{CENTRE, NO_CENTRE, case_table, edge_origin};
 use crate::marching_cubes::{edge_vertex, inside, settle, snap_noise};
 use glam::Vec3;
 use solidkit_kernel::Evaluator;
+use solidkit_kernel::eval::ZeroSide;
 
 /// Number of distinct local edge ids (14 bits).
 pub(crate) const LOCAL_EDGE_IDS: usize = 1 << 14;
@@ -196,7 +197,28 @@ impl<E: Evaluator> BoxSamples<E> {
                 grid_value(root, spec, q, batch)
             });
         }
-        self.thin = super::thin::scan(&self.values, n, min, spec, program, &mut self.interval);
+        let slots = &mut self.zero_slots;
+        let mut outer = |q: [usize; 3]| {
+            let v = grid_value(root, spec, q, batch);
+            if v != 0.0 {
+                return Some(v < 0.0);
+            }
+            let p = [0, 1, 2].map(|a| spec.coordinate(a, q[a]) as f64);
+            match root.zero_side(glam::DVec3::from(p), slots) {
+                ZeroSide::Inside => Some(true),
+                ZeroSide::Outside => Some(false),
+                ZeroSide::Surface => None,
+            }
+        };
+        self.thin = super::thin::scan(
+            &self.values,
+            n,
+            min,
+            spec,
+            program,
+            &mut self.interval,
+            &mut outer,
+        );
         seconds
     }
 }

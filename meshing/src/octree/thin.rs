@@ -83,7 +83,10 @@ impl ThinCounts {
 }
 
 /// Scans the settled `values` of the `n[0] × n[1] × n[2]` samples from grid index `min` (x
-/// fastest), searching with `program` (valid in their box).
+/// fastest), searching with `program` (valid in their box). `outer` gives the settled side of a
+/// grid sample outside the brick (`Some(true)`: inside; `None`: undecided), for the cells at the
+/// brick's border whose 4 × 4 × 4 neighbourhood reaches into the next brick: without it a part
+/// the next brick holds (a wedge whose edge runs along the border) would look detached.
 pub fn scan<E: Evaluator>(
     values: &[f32],
     n: [usize; 3],
@@ -91,6 +94,7 @@ pub fn scan<E: Evaluator>(
     spec: &GridSpec,
     program: &E,
     scratch: &mut E::IntervalScratch,
+    outer: &mut dyn FnMut([usize; 3]) -> Option<bool>,
 ) -> ThinCounts {
     let mut counts = ThinCounts::default();
     let stride = [1, n[0], n[0] * n[1]];
@@ -127,6 +131,7 @@ pub fn scan<E: Evaluator>(
                 here,
                 &mut searched,
                 &mut counts,
+                outer,
             );
         }
     }
@@ -238,6 +243,7 @@ fn candidate<E: Evaluator>(
     here: bool,
     searched: &mut Vec<usize>,
     counts: &mut ThinCounts,
+    outer: &mut dyn FnMut([usize; 3]) -> Option<bool>,
 ) {
     let stride = [1, n[0], n[0] * n[1]];
     let [_, b, d] = axes;
@@ -263,7 +269,9 @@ fn candidate<E: Evaluator>(
             continue;
         }
         searched.push(cidx);
-        if near_other_side(values, cell, n, stride, here) {
+        if near_other_side(values, cell, n, stride, here)
+            || outer_near_other_side(cell, n, min, spec.samples(), here, outer)
+        {
             // A detail of a part the mesh has: not worth a search.
             counts.attached += 1;
             continue;
@@ -298,6 +306,39 @@ fn near_other_side(
     range(2).any(|k| {
         range(1).any(|j| range(0).any(|i| (values[i + s[1] * j + s[2] * k] < 0.0) != here))
     })
+}
+
+/// Whether a grid sample of the 4 × 4 × 4 block around the cell at `cell` that lies outside the
+/// brick (`n` samples from grid index `min`; the grid has `samples` per axis) is on the side
+/// `!here` or undecided, by `outer`. Only reached for candidate cells, so rarely.
+fn outer_near_other_side(
+    cell: [usize; 3],
+    n: [usize; 3],
+    min: [usize; 3],
+    samples: [usize; 3],
+    here: bool,
+    outer: &mut dyn FnMut([usize; 3]) -> Option<bool>,
+) -> bool {
+    // Global sample ranges of the block, clipped to the grid.
+    let range = |a: usize| {
+        let lo = (min[a] + cell[a]).saturating_sub(1);
+        let hi = (min[a] + cell[a] + 3).min(samples[a]);
+        lo..hi
+    };
+    let within = |a: usize, g: usize| g >= min[a] && g < min[a] + n[a];
+    for k in range(2) {
+        for j in range(1) {
+            for i in range(0) {
+                if within(0, i) && within(1, j) && within(2, k) {
+                    continue; // seen by near_other_side
+                }
+                if outer([i, j, k]) != Some(here) {
+                    return true;
+                }
+            }
+        }
+    }
+    false
 }
 
 /// A point of the cell `[lo, lo + h]³` on the other side of `here` (inside when `here` is
