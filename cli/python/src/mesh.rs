@@ -17,6 +17,18 @@ use solidkit_meshing::{IndexedMesh, ReportOptions, TopologyReport};
 use std::path::PathBuf;
 
 /// A triangle mesh (immutable: its arrays are read-only; make a new `Mesh` to change it).
+/// What a mesh run was asked for, as the report repeats it.
+pub struct Asked<'a> {
+    /// Cells along the longest side.
+    pub resolution: usize,
+    /// `"mc"` or `"dc"`.
+    pub method: &'a str,
+    /// The simplification distance, if any.
+    pub simplify: Option<f64>,
+    /// `target_error`, if given.
+    pub target_error: Option<f64>,
+}
+
 #[pyclass(module = "solidkit", name = "Mesh", frozen)]
 pub struct PyMesh {
     vertices: Py<PyArray2<f64>>,
@@ -113,12 +125,14 @@ impl PyMesh {
         py: Python<'_>,
         meshed: Meshed,
         warnings: Vec<String>,
-        resolution: usize,
-        method: &str,
+        asked: Asked<'_>,
     ) -> PyResult<PyMesh> {
         let info = serde_json::json!({
-            "resolution": resolution,
-            "method": method,
+            "resolution": asked.resolution,
+            "method": asked.method,
+            "simplify": asked.simplify,
+            "target_error": asked.target_error,
+            "simplify_collapses": meshed.simplified.map(|s| s.collapses),
             "cells": meshed.spec.cells,
             "refinement": meshed.factor,
             "samples_total": meshed.samples_total,

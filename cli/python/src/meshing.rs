@@ -17,8 +17,12 @@ use std::sync::Arc;
 pub struct MeshArgs<'a, 'py> {
     /// Cells along the longest side.
     pub resolution: usize,
-    /// `"mc"` or `"dc"`.
-    pub method: &'a str,
+    /// `"mc"` or `"dc"` (default: `"dc"` with `target_error`, else `"mc"`).
+    pub method: Option<&'a str>,
+    /// Edge-collapse simplification within this distance (model units) after meshing.
+    pub simplify: Option<f64>,
+    /// Dual contouring then simplification within this distance (`mesh --target-error`).
+    pub target_error: Option<f64>,
     /// Dual contouring's simplification tolerance.
     pub tolerance: Option<f64>,
     /// Clipping bounds.
@@ -31,6 +35,17 @@ pub struct MeshArgs<'a, 'py> {
     pub threads: Option<usize>,
     /// `progress(stage, done, total)`.
     pub progress: Option<Bound<'py, PyAny>>,
+}
+
+impl MeshArgs<'_, '_> {
+    /// The method asked for, or the default (`"dc"` with `target_error`, else `"mc"`).
+    fn method_name(&self) -> &str {
+        self.method.unwrap_or(if self.target_error.is_some() {
+            "dc"
+        } else {
+            "mc"
+        })
+    }
 }
 
 /// The pipeline's options for `a`, range-checked like the command line's.
@@ -47,7 +62,7 @@ fn options(a: &MeshArgs<'_, '_>) -> PyResult<MeshOptions> {
             a.refine
         )));
     }
-    let method = match a.method {
+    let method = match a.method_name() {
         "mc" => Method::Mc,
         "dc" => Method::Dc,
         other => {
@@ -56,6 +71,15 @@ fn options(a: &MeshArgs<'_, '_>) -> PyResult<MeshOptions> {
             )));
         }
     };
+    for (name, e) in [("simplify", a.simplify), ("target_error", a.target_error)] {
+        if let Some(e) = e
+            && !(e.is_finite() && e > 0.0)
+        {
+            return Err(PyValueError::new_err(format!(
+                "{name} must be a positive number, got {e}"
+            )));
+        }
+    }
     if let Some(t) = a.tolerance
         && !(t.is_finite() && t > 0.0)
     {
@@ -83,6 +107,7 @@ fn options(a: &MeshArgs<'_, '_>) -> PyResult<MeshOptions> {
         .method(method)
         .domain(domain)
         .tolerance(a.tolerance)
+        .simplify(a.target_error.or(a.simplify))
         .refine(refine)
         .max_memory(Some(a.max_memory.unwrap_or_else(default_max_memory))))
 }
@@ -124,5 +149,11 @@ pub fn mesh(
         .map(|w| crate::errors::pythonic(w))
         .collect();
     crate::warn::warn_all(py, &warnings[loaded.len()..])?;
-    PyMesh::from_meshed(py, meshed, warnings, a.resolution, a.method)
+    let asked = crate::mesh::Asked {
+        resolution: a.resolution,
+        method: a.method_name(),
+        simplify: a.target_error.or(a.simplify),
+        target_error: a.target_error,
+    };
+    PyMesh::from_meshed(py, meshed, warnings, asked)
 }

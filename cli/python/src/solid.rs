@@ -380,29 +380,36 @@ impl PySolid {
         )
     }
 
-    /// Meshes the solid: marching cubes (`method="mc"`) or dual contouring (`"dc"`, optionally
-    /// simplified to `tolerance`), `resolution` cells along the longest side of its bounding box
+    /// Meshes the solid: marching cubes (`method="mc"`, the default) or dual contouring (`"dc"`,
+    /// optionally simplified to `tolerance`; the default with `target_error`), then, with
+    /// `simplify=E` or `target_error=E`, edge collapses that keep the surface within `E` (model
+    /// units) and the mesh closed, manifold and of the same genus, `resolution` cells along the longest side of its bounding box
     /// (or of `bounds`, `((xmin, ymin, zmin), (xmax, ymax, zmax))`, which also clips it), refined
     /// up to `refine` times finer where features are thinner than a cell. `progress(stage, done,
     /// total)` is called from this thread; Ctrl-C stops the run with KeyboardInterrupt.
-    #[pyo3(signature = (resolution = 128, *, method = "mc", tolerance = None, bounds = None,
-        refine = 32, max_memory = None, threads = None, progress = None))]
+    #[pyo3(signature = (resolution = 128, *, method = None, tolerance = None, bounds = None,
+        refine = 32, max_memory = None, threads = None, progress = None, simplify = None,
+        target_error = None))]
     #[allow(clippy::too_many_arguments)]
     fn mesh(
         &self,
         py: Python<'_>,
         resolution: usize,
-        method: &str,
+        method: Option<&str>,
         tolerance: Option<f64>,
         bounds: Option<([f64; 3], [f64; 3])>,
         refine: usize,
         max_memory: Option<u64>,
         threads: Option<usize>,
         progress: Option<Bound<'_, PyAny>>,
+        simplify: Option<f64>,
+        target_error: Option<f64>,
     ) -> PyResult<crate::mesh::PyMesh> {
         let args = crate::meshing::MeshArgs {
             resolution,
             method,
+            simplify,
+            target_error,
             tolerance,
             bounds,
             refine,

@@ -78,6 +78,31 @@ def test_report_keys_and_values_match_the_command_line(tmp_path, solidkit_bin, f
         assert py[key] == cli[key], key
 
 
+def test_target_error_makes_small_meshes_like_the_command_line(tmp_path, solidkit_bin):
+    tree = tmp_path / "box.json"
+    tree.write_text(json.dumps({"format": "solidkit-tree", "version": 1,
+                                "root": {"type": "box", "size": [1, 1, 1]}}))
+    out = subprocess.run(
+        [solidkit_bin, "mesh", str(tree), "--resolution", "32", "--target-error", "0.002",
+         "--json", "--no-progress"],
+        check=True, capture_output=True, text=True,
+    )
+    cli = json.loads(out.stdout)
+    m = sk.load(tree).mesh(resolution=32, target_error=0.002)
+    r = m.report()
+    assert r["method"] == "dc" and r["target_error"] == 0.002 and r["simplify"] == 0.002
+    assert r["simplify_collapses"] > 0
+    assert len(m.faces) <= 48 and len(m.faces) == cli["faces"]
+    assert r["closed"] and r["manifold"] and r["genus"] == 0
+    # within area x E of the exact volume, and the same mesh as the command line's
+    assert abs(r["volume"] - 1.0) < 6 * 0.002 and r["volume"] == cli["volume"]
+    plain = sk.load(tree).mesh(resolution=32)
+    assert plain.report()["simplify"] is None and len(plain.faces) > 1000
+    for bad in [0.0, -1.0, float("nan")]:
+        with pytest.raises(ValueError, match="target_error"):
+            sk.box(1).mesh(target_error=bad)
+
+
 def test_save_read_check_and_compare(tmp_path):
     m = (sk.sphere(1) - sk.cube(1.2)).mesh(resolution=48)
     for ext in ["stl", "ply", "obj", "off"]:

@@ -81,19 +81,23 @@ class Solid:
         self,
         resolution: int = 128,
         *,
-        method: Literal["mc", "dc"] = "mc",
+        method: Optional[Literal["mc", "dc"]] = None,
         tolerance: Optional[float] = None,
         bounds: Optional[Bounds] = None,
         refine: int = 32,
         max_memory: Optional[int] = None,
         threads: Optional[int] = None,
         progress: Optional[Progress] = None,
+        simplify: Optional[float] = None,
+        target_error: Optional[float] = None,
     ) -> Mesh:
         """A closed oriented 2-manifold mesh of the solid.
 
         ``resolution`` cells along the longest side of the bounding box (or of ``bounds``,
-        which also clips the solid); ``method`` marching cubes or dual contouring
-        (``tolerance`` simplifies DC meshes); refined up to ``refine`` times finer where
+        which also clips the solid); ``method`` marching cubes (default) or dual contouring
+        (``tolerance`` simplifies DC meshes; the default with ``target_error``); ``simplify=E``
+        or ``target_error=E`` (dual contouring, then simplify) collapse edges while the surface
+        stays within E model units, closed, manifold and of the same genus; refined up to ``refine`` times finer where
         features are thinner than a cell; refused above ``max_memory`` bytes (default half the
         machine's memory). ``progress(stage, done, total)`` is called on this thread; Ctrl-C
         raises KeyboardInterrupt after stopping the mesher.
