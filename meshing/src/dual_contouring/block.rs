@@ -87,7 +87,9 @@ impl Block {
 
 /// Per-thread buffers.
 #[derive(Default)]
-pub(crate) struct BlockScratch<S> {
+pub(crate) struct BlockScratch<S, I> {
+    /// Inside flag per sample of the block.
+    ins: Vec<u8>,
     ids: Vec<u32>,
     queries: Vec<EdgeQuery>,
     keys: Vec<u32>,
@@ -97,11 +99,13 @@ pub(crate) struct BlockScratch<S> {
     groups: Vec<u32>,
     grouped: GroupScratch,
     pub field: S,
+    /// Interval buffers of the per-group pruning (long programs only).
+    interval: I,
     /// Times the crossing search, when the caller gave a clock.
     clock: Option<ClockFn>,
 }
 
-impl<S: Default> BlockScratch<S> {
+impl<S: Default, I: Default> BlockScratch<S, I> {
     /// Empty buffers; the crossing search is timed with `clock` when there is one.
     pub(crate) fn with_clock(clock: Option<ClockFn>) -> Self {
         BlockScratch {
@@ -121,12 +125,14 @@ pub(crate) fn build<F: Evaluator>(
     block_size: usize,
     values: &[f32],
     keep: bool,
-    s: &mut BlockScratch<F::GradientScratch>,
+    s: &mut BlockScratch<F::GradientScratch, F::IntervalScratch>,
 ) -> Block {
     let e = extent;
     let n = [e[0] + 1, e[1] + 1, e[2] + 1];
     let (nx, nxy) = (n[0], n[0] * n[1]);
-    let ins: Vec<u8> = values.iter().map(|&v| u8::from(inside(v))).collect();
+    s.ins.clear();
+    s.ins.extend(values.iter().map(|&v| u8::from(inside(v))));
+    let ins = &s.ins;
     let point = |l: [usize; 3]| spec.point(min[0] + l[0], min[1] + l[1], min[2] + l[2]);
     // Every sign-changing edge between the block's samples.
     s.ids.clear();
@@ -164,7 +170,6 @@ pub(crate) fn build<F: Evaluator>(
     s.crossings.clear();
     let start = now(s.clock.as_ref());
     if field.len() >= GROUP_PRUNE_LEN && s.queries.len() > 8 {
-        let mut is = F::IntervalScratch::default();
         refine_grouped(
             field,
             &s.queries,
@@ -173,7 +178,7 @@ pub(crate) fn build<F: Evaluator>(
             &mut s.search,
             &mut s.grouped,
             &mut s.field,
-            &mut is,
+            &mut s.interval,
         );
     } else {
         refine(
@@ -316,7 +321,7 @@ pub(crate) fn build<F: Evaluator>(
         });
     }
     if keep {
-        b.inside = ins;
+        b.inside = ins.clone();
     }
     b
 }
