@@ -68,6 +68,7 @@ pub mod program;
 pub mod simd;
 mod solid;
 pub mod surface;
+pub mod swept;
 pub mod tessellate;
 mod transform;
 pub mod triangulate;

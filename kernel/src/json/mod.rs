@@ -19,7 +19,9 @@
 //! [`MeshResolver`]: see [`from_str_with`]), `prism` (polygon: [[x, y], …], optional holes,
 //! direction), `subdivide` (scheme: catmull-clark | loop | butterfly | doo-sabin, levels, and a
 //! polyhedral `child`; computed by the [`MeshResolver`]), `dual` (a convex polyhedral `child`:
-//! one vertex per face centroid, one face per vertex).
+//! one vertex per face centroid, one face per vertex), `swept_volume` (a bounded `child` moved
+//! along a `path` curve, `frame` rmf | fixed, optional `tolerance`; read as the union of the
+//! child's copies along the path, see [`crate::swept`]).
 //! Quadrics: `ellipsoid` (radii), `quadric` (coefficients {a, b, c, f, g, h, p, q, r, d}, bounds),
 //! `elliptic_cylinder` / `elliptic_cone` / `elliptic_paraboloid` / `hyperbolic_paraboloid`
 //! (radii [a, b], bounds), `hyperboloid_one_sheet` / `hyperboloid_two_sheets` (radii, bounds);

@@ -23,6 +23,7 @@ mod quadric;
 mod subdivide;
 mod surface;
 mod sweep;
+mod swept;
 
 pub use curve::curve_from_str;
 
@@ -179,7 +180,7 @@ impl<'a> Reader<'a> {
                     .collect()
             }
             "translate" | "rotate" | "scale" | "mirror" | "affine" | "offset" | "shell"
-            | "subdivide" | "dual" => {
+            | "subdivide" | "dual" | "swept_volume" => {
                 vec![(
                     "child".to_string(),
                     self.required(index, entries, "child", &p)?,
@@ -243,6 +244,9 @@ impl<'a> Reader<'a> {
         }
         if ty == "dual" {
             return params.dual(children);
+        }
+        if ty == "swept_volume" {
+            return params.swept_volume(children);
         }
         let (kind, allowed): (NodeKind, &[&str]) = match ty {
             "union" => (NodeKind::Union, &["children"]),

@@ -7,7 +7,7 @@
 //! about the tangent; the frame at `t` is then turned back by `Δ·(t − t₀)/(t₁ − t₀)` so it closes.
 //! A planar closed path has `Δ = 0`.
 
-use crate::curve::{Curve, Curve3};
+use crate::curve::{Curve, Curve3, Jet};
 use glam::DVec3;
 
 /// A frame sample: parameter, point, unit tangent and unit reference vector normal to it.
@@ -89,9 +89,14 @@ impl Frames {
     /// Frames at the parameters `params` (increasing, covering the domain) of `path`; `closed`
     /// paths get the holonomy correction.
     pub(crate) fn new(path: &Curve, params: &[f64], closed: bool) -> Frames {
+        Frames::from_jets(|t| path.jet(t), params, closed)
+    }
+
+    /// Frames like [`Frames::new`] for any path given by its jets (formula curves too).
+    pub(crate) fn from_jets(jet: impl Fn(f64) -> Jet, params: &[f64], closed: bool) -> Frames {
         let mut samples: Vec<Sample> = Vec::with_capacity(params.len());
         for &t in params {
-            let j = path.jet(t);
+            let j = jet(t);
             let tangent = j.d1.normalize_or(DVec3::Z);
             let normal = match samples.last() {
                 None => initial_normal(tangent),

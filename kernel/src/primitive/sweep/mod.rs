@@ -28,6 +28,7 @@ mod tests;
 
 pub use error::SweepError;
 pub use extrude::Extrude;
+pub(crate) use frames::Frames;
 pub use loft::Loft;
 pub use revolve::Revolve;
 pub use rings::{MAX_SAMPLES, signed_volume};
