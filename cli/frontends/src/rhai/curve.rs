@@ -14,7 +14,7 @@ use std::sync::Arc;
 
 /// A curve as scripts see it (type name `Curve`).
 #[derive(Debug, Clone)]
-pub struct ScriptCurve(Arc<Parametric>);
+pub struct ScriptCurve(pub(super) Arc<Parametric>);
 
 fn point(p: DVec3) -> Dynamic {
     Dynamic::from_array(vec![p.x.into(), p.y.into(), p.z.into()])

@@ -13,6 +13,7 @@ mod defines;
 mod error;
 mod node;
 mod shape;
+mod swept;
 #[cfg(test)]
 mod tests;
 
@@ -231,6 +232,7 @@ fn engine(
     }
     api::register(&mut engine, limits.max_nodes, resolver, exported);
     curve::register(&mut engine);
+    swept::register(&mut engine, limits.max_nodes);
     engine
 }
 

@@ -393,3 +393,48 @@ fn curves_evaluate_split_and_flatten() {
         assert!(e.contains(message), "{script}: {e}");
     }
 }
+
+#[test]
+fn swept_along_is_the_json_swept_volume() {
+    let path = r#"curve(#{type: "bezier", points: [[0, 0, 0], [1, 0.5, 0], [2, 0, 0]]})"#;
+    let script = solid(&format!(
+        "sphere(0.5).swept_along({path}, #{{tolerance: 0.1}})"
+    ));
+    let json = tree(
+        r#"{"type": "swept_volume", "tolerance": 0.1, "child": {"type": "sphere", "radius": 0.5},
+            "path": {"type": "bezier", "points": [[0, 0, 0], [1, 0.5, 0], [2, 0, 0]]}}"#,
+    );
+    assert!(script == json, "the script and the JSON node differ");
+    assert!(
+        script.children().len() > 20,
+        "{} copies",
+        script.children().len()
+    );
+    let fixed = solid(&format!(
+        "cube(1).swept_along({path}, #{{frame: \"fixed\"}})"
+    ));
+    assert!(fixed.children().len() > 2);
+    let bad = run(&format!(
+        "sphere(1).swept_along({path}, #{{frame: \"twisted\"}})"
+    ))
+    .expect_err("bad frame");
+    assert!(bad.to_string().contains("\"rmf\" or \"fixed\""), "{bad}");
+    let tiny = run(&format!(
+        "sphere(1).swept_along({path}, #{{tolerance: 1e-9}})"
+    ))
+    .expect_err("too many copies");
+    assert!(
+        tiny.to_string().contains("use a tolerance of at least"),
+        "{tiny}"
+    );
+    let unbounded =
+        run(&format!("plane([0, 0, 1], 0).swept_along({path})")).expect_err("unbounded");
+    assert!(unbounded.to_string().contains("bounded"), "{unbounded}");
+    let t = run("let t = swept_tolerance(sphere(1)); sphere(t)").expect("tolerance");
+    assert!(
+        t == tree(&format!(
+            r#"{{"type": "sphere", "radius": {:?}}}"#,
+            2.0 * 3f64.sqrt() / 50.0
+        ))
+    );
+}
