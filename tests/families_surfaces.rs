@@ -4,7 +4,7 @@
 //! input refused with its place.
 
 use solidkit_kernel::primitive::{MeshSource, NoMeshResolver, Primitive};
-use solidkit_kernel::surface::SurfaceSpec;
+use solidkit_kernel::surface::{SurfaceKind, SurfaceSpec};
 use solidkit_kernel::{NodeKind, Solid, json};
 use solidkit_meshing::TopologyReport;
 use solidkit_meshing::io::FileMeshResolver;
@@ -67,6 +67,25 @@ fn bezier_and_bspline_patches() {
 }
 
 #[test]
+fn interpolating_patch_through_16_points() {
+    // x = 3u and y = 3v exactly (cubics through collinear equally spaced points), z the bicubic:
+    // its integral is Simpson's 3/8 rule over the 16 heights, so the volume down to z = -0.5 is
+    // 9 (Σ wᵢwⱼ zᵢⱼ + 0.5) = 12.965625.
+    check("interpolating_patch.json", Some(12.965625), 0.01);
+    let solid = load_tree("surfaces/interpolating_patch.json");
+    let s = spec(&solid);
+    let SurfaceKind::Interpolating(p) = &s.kind else {
+        panic!("not an interpolating patch");
+    };
+    for (k, q) in p.points().iter().enumerate() {
+        let d = s
+            .kind
+            .derivatives((k % 4) as f64 / 3.0, (k / 4) as f64 / 3.0);
+        assert!((d.unwrap().p - *q).length() < 1e-12, "point {k}");
+    }
+}
+
+#[test]
 fn nurbs_half_cylinder_shell_has_its_exact_volume() {
     // π/2 (1.1² − 0.9²) × 3 = 0.6π.
     check("nurbs_surface.json", Some(0.6 * PI), 0.03);
@@ -115,6 +134,7 @@ fn pn_triangles_from_a_mesh_file() {
 fn surfaces_round_trip_through_json() {
     for name in [
         "bezier_patch.json",
+        "interpolating_patch.json",
         "bspline_surface.json",
         "nurbs_surface.json",
         "param_surface.json",
@@ -161,6 +181,10 @@ fn bad_surfaces_are_refused_with_their_place() {
         (
             r#"{"type": "bezier_patch", "points": [[[0,0,0],[1,0,0]],[[0,1,0],[1,1,0]]], "base": 1}"#,
             "base",
+        ),
+        (
+            r#"{"type": "interpolating_patch", "points": [[[0,0,0],[1,0,0]],[[0,1,0],[1,1,0]]], "base": -1}"#,
+            "expected 4 rows of 4 points",
         ),
         (
             r#"{"type": "bspline_surface", "degree": 3, "points": [[[0,0,0],[1,0,0]],[[0,1,0],[1,1,0]]], "base": -1}"#,

@@ -522,8 +522,13 @@ impl Params<'_, '_> {
             "mesh" => self.mesh_file()?,
             "prism" => self.prism()?,
             "expr" => self.expr()?,
-            "bezier_patch" | "bspline_surface" | "nurbs_surface" | "param_surface"
-            | "bezier_triangle" | "pn_triangles" => self.surface(ty)?,
+            "bezier_patch"
+            | "interpolating_patch"
+            | "bspline_surface"
+            | "nurbs_surface"
+            | "param_surface"
+            | "bezier_triangle"
+            | "pn_triangles" => self.surface(ty)?,
             other => {
                 let t = self.at("type")?;
                 return Err(self.fail(t, "type", format!("unknown node type \"{other}\"")));

@@ -1,5 +1,5 @@
 //! Parametric surfaces as solids (lecture notes 001): tensor-product Bézier, B-spline and NURBS
-//! patches, triangular Bézier patches, curved PN triangles over a mesh with normals, and formula
+//! patches, the interpolating bicubic patch through 16 points ([`InterpolatingPatch`]), triangular Bézier patches, curved PN triangles over a mesh with normals, and formula
 //! surfaces `(x, y, z)(u, v)` or `z = f(u, v)`.
 //!
 //! A surface is a sheet, not a solid. A [`SurfaceSpec`] closes it:
@@ -34,6 +34,9 @@ mod spec;
 mod tensor;
 #[cfg(test)]
 mod tests;
+mod through;
+#[cfg(test)]
+mod through_tests;
 
 pub use derivs::SurfaceDerivatives;
 pub use error::SurfaceError;
@@ -41,3 +44,4 @@ pub use formula::FormulaSurface;
 pub use sample::{MAX_SEGMENTS, Sampled};
 pub use spec::{Closure, PnSource, Side, SurfaceKind, SurfaceSpec};
 pub use tensor::{MAX_CONTROL_POINTS, MAX_DEGREE, TensorSurface, clamped_knots};
+pub use through::{InterpolatingPatch, bezier_net};

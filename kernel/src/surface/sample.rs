@@ -114,6 +114,7 @@ fn grid(kind: &SurfaceKind, tolerance: Option<f64>) -> Result<Parts, SurfaceErro
     };
     let bound = match kind {
         SurfaceKind::Bezier(p) | SurfaceKind::BSpline(p) => p.second_derivative_bounds(),
+        SurfaceKind::Interpolating(p) => p.bezier().second_derivative_bounds(),
         _ => None,
     };
     let estimated = bound.is_none();

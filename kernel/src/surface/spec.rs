@@ -4,6 +4,7 @@
 use super::derivs::SurfaceDerivatives;
 use super::formula::FormulaSurface;
 use super::tensor::TensorSurface;
+use super::through::InterpolatingPatch;
 use crate::patch::TriangleBezier;
 use glam::DVec3;
 
@@ -12,6 +13,9 @@ use glam::DVec3;
 pub enum SurfaceKind {
     /// `bezier_patch`: a tensor-product Bézier patch.
     Bezier(TensorSurface),
+    /// `interpolating_patch`: the bicubic patch through 16 points at `u, v ∈ {0, 1/3, 2/3, 1}`
+    /// (kept with its points; tessellated as its Bézier patch).
+    Interpolating(InterpolatingPatch),
     /// `bspline_surface`: a tensor-product B-spline surface.
     BSpline(TensorSurface),
     /// `nurbs_surface`: a tensor-product NURBS surface.
@@ -29,6 +33,7 @@ impl SurfaceKind {
     pub fn name(&self) -> &'static str {
         match self {
             SurfaceKind::Bezier(_) => "bezier_patch",
+            SurfaceKind::Interpolating(_) => "interpolating_patch",
             SurfaceKind::BSpline(_) => "bspline_surface",
             SurfaceKind::Nurbs(_) => "nurbs_surface",
             SurfaceKind::Formula(_) => "param_surface",
@@ -44,6 +49,7 @@ impl SurfaceKind {
             SurfaceKind::Bezier(p) | SurfaceKind::BSpline(p) | SurfaceKind::Nurbs(p) => {
                 Some(p.derivatives(s, t))
             }
+            SurfaceKind::Interpolating(p) => Some(p.bezier().derivatives(s, t)),
             SurfaceKind::Formula(f) => Some(f.derivatives(s, t)),
             SurfaceKind::Triangle(_) | SurfaceKind::Pn(_) => None,
         }

@@ -1,4 +1,4 @@
-//! Reading the parametric surface node types (`bezier_patch`, `bspline_surface`, `nurbs_surface`,
+//! Reading the parametric surface node types (`bezier_patch`, `interpolating_patch`, `bspline_surface`, `nurbs_surface`,
 //! `param_surface`, `bezier_triangle`, `pn_triangles`) and their closure keys (`thickness` with
 //! `side`, or `base`; neither for a closed surface), `tolerance` and `segments`. See
 //! [`crate::surface`] for what they mean; errors name the key they are about.
@@ -7,8 +7,8 @@ use super::{Params, R, Value, find};
 use crate::patch::TriangleBezier;
 use crate::primitive::Primitive;
 use crate::surface::{
-    Closure, FormulaSurface, PnSource, Side, SurfaceError, SurfaceKind, SurfaceSpec, TensorSurface,
-    clamped_knots,
+    Closure, FormulaSurface, InterpolatingPatch, PnSource, Side, SurfaceError, SurfaceKind,
+    SurfaceSpec, TensorSurface, clamped_knots,
 };
 use glam::DVec3;
 
@@ -85,6 +85,22 @@ impl Params<'_, '_> {
                 let (counts, points) = self.point_rows("points")?;
                 let s = TensorSurface::bezier(counts, points).map_err(|e| self.surface_error(e))?;
                 (SurfaceKind::Bezier(s), &PATCH)
+            }
+            "interpolating_patch" => {
+                let (counts, points) = self.point_rows("points")?;
+                if counts != [4, 4] {
+                    let at = self.at("points")?;
+                    return Err(self.fail(
+                        at,
+                        "points",
+                        format!(
+                            "expected 4 rows of 4 points (u, v at 0, 1/3, 2/3, 1), got {} rows of {}",
+                            counts[1], counts[0]
+                        ),
+                    ));
+                }
+                let p = InterpolatingPatch::new(&points).map_err(|e| self.surface_error(e))?;
+                (SurfaceKind::Interpolating(p), &PATCH)
             }
             "bspline_surface" | "nurbs_surface" => {
                 let (counts, points) = self.point_rows("points")?;

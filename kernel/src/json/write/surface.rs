@@ -10,6 +10,10 @@ use glam::DVec3;
 pub(super) fn members(spec: &SurfaceSpec) -> String {
     let mut out = match &spec.kind {
         SurfaceKind::Bezier(s) => format!("\"points\": {}", rows(s)),
+        SurfaceKind::Interpolating(p) => {
+            let r: Vec<String> = p.points().chunks(4).map(points).collect();
+            format!("\"points\": [{}]", r.join(", "))
+        }
         SurfaceKind::BSpline(s) | SurfaceKind::Nurbs(s) => {
             let [p, q] = s.degrees();
             let mut m = format!("\"degree\": [{p}, {q}], \"points\": {}", rows(s));

@@ -94,8 +94,8 @@ pub enum MeshSource {
         /// `platonic`; never itself subdivided, so this nests one level only).
         child: Box<Primitive>,
     },
-    /// A parametric surface closed into a solid (JSON `bezier_patch`, `bspline_surface`,
-    /// `nurbs_surface`, `param_surface`, `bezier_triangle`, `pn_triangles`).
+    /// A parametric surface closed into a solid (JSON `bezier_patch`, `interpolating_patch`,
+    /// `bspline_surface`, `nurbs_surface`, `param_surface`, `bezier_triangle`, `pn_triangles`).
     Surface(Box<crate::surface::SurfaceSpec>),
     /// The dual of a convex polyhedral primitive (JSON `dual`).
     Dual {
