@@ -29,6 +29,22 @@ pub enum SweptError {
         /// A tolerance that fits within the limit.
         minimum: f64,
     },
+    /// The copies would make a tree of more than [`super::MAX_TREE_NODES`] nodes (a large
+    /// child, or swept volumes nested in swept volumes).
+    #[error(
+        "tolerance: {copies} copies of a child of {child_nodes} nodes make {nodes} nodes, more \
+         than the limit of {limit}; use a larger tolerance or a smaller child"
+    )]
+    TooLarge {
+        /// Copies the tolerance needs.
+        copies: usize,
+        /// Nodes of the child (a shared subtree counted once per use).
+        child_nodes: usize,
+        /// Nodes of the whole swept volume.
+        nodes: usize,
+        /// The limit, [`super::MAX_TREE_NODES`].
+        limit: usize,
+    },
     /// A placement of the solid along the path is not a valid transform (too far away).
     #[error("path: a placement of the solid is not a valid transform: {0}")]
     Transform(#[from] TransformError),
@@ -39,7 +55,9 @@ impl SweptError {
     pub fn parameter(&self) -> &'static str {
         match self {
             SweptError::UnboundedChild => "child",
-            SweptError::Tolerance(_) | SweptError::TooManyCopies { .. } => "tolerance",
+            SweptError::Tolerance(_)
+            | SweptError::TooManyCopies { .. }
+            | SweptError::TooLarge { .. } => "tolerance",
             SweptError::Path | SweptError::Transform(_) => "path",
         }
     }

@@ -20,8 +20,8 @@
 //! The tree is an ordinary union of affine transforms of the shared child, so the Program's
 //! intervals are those of the union (sound), and the octree's pruning keeps only the copies near
 //! each brick. The default tolerance is the child box's diagonal over
-//! [`DEFAULT_DIVISOR`]; more than [`MAX_COPIES`] copies is an error that names a tolerance that
-//! fits, never a long wait.
+//! [`DEFAULT_DIVISOR`]; more than [`MAX_COPIES`] copies, or a tree of more than
+//! [`MAX_TREE_NODES`] nodes, is an error that names what to change, never a long wait.
 
 mod error;
 mod motion;
@@ -39,6 +39,10 @@ use glam::DAffine3;
 
 /// The most copies of the child a swept volume may hold.
 pub const MAX_COPIES: usize = 4096;
+
+/// The most nodes a swept volume's tree may have (copies × (child nodes + 1) + 1): a swept
+/// volume nested in another would otherwise multiply the tree by thousands per level.
+pub const MAX_TREE_NODES: usize = 1_000_000;
 
 /// The default tolerance is the child's bounding-box diagonal divided by this.
 pub const DEFAULT_DIVISOR: f64 = 50.0;
@@ -122,6 +126,20 @@ pub fn swept_volume(
     };
     let bounds = sample::step_bounds(&motion, rho)?;
     let params = sample::choose(&motion.fine, &bounds, tolerance, MAX_COPIES)?;
+    // The child's count is bounded: a nested swept volume passed this check itself.
+    let child_nodes = child.node_count();
+    let nodes = params
+        .len()
+        .saturating_mul(child_nodes.saturating_add(1))
+        .saturating_add(1);
+    if nodes > MAX_TREE_NODES {
+        return Err(SweptError::TooLarge {
+            copies: params.len(),
+            child_nodes,
+            nodes,
+            limit: MAX_TREE_NODES,
+        });
+    }
     let mut copies = Vec::with_capacity(params.len());
     for &t in &params {
         let m = motion.at(t);

@@ -151,6 +151,12 @@ fn errors_are_clear() {
     assert!(swept_volume(&Solid::sphere(1.0), &path, SweptFrame::Rmf, Some(minimum)).is_ok());
     let e = swept_volume(&Solid::sphere(1.0), &path, SweptFrame::Rmf, Some(-1.0)).unwrap_err();
     assert_eq!(e, SweptError::Tolerance(-1.0));
+    // Nested swept volumes multiply the tree: refused, not lowered for minutes.
+    let inner = swept_volume(&Solid::sphere(1.0), &path, SweptFrame::Rmf, Some(0.05)).expect("ok");
+    assert!(inner.params.len() > 2000, "{}", inner.params.len());
+    let outer = bezier(&[[0.0, 0.0, 0.0], [0.0, 0.0, 1000.0]]);
+    let e = swept_volume(&inner.solid, &outer, SweptFrame::Fixed, None).unwrap_err();
+    assert!(matches!(e, SweptError::TooLarge { .. }), "{e}");
     let plane = Solid::half_space(DVec3::Z, 0.0);
     let e = swept_volume(&plane, &path, SweptFrame::Rmf, None).unwrap_err();
     assert_eq!(e, SweptError::UnboundedChild);
