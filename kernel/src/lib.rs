@@ -50,6 +50,7 @@
 mod aabb;
 pub mod bvh;
 pub mod closest;
+pub mod color;
 pub mod curve;
 mod error;
 pub mod eval;
@@ -74,6 +75,7 @@ mod transform;
 pub mod triangulate;
 
 pub use aabb::Aabb;
+pub use color::{ColoredPart, Rgba};
 pub use error::KernelError;
 pub use eval::Evaluator;
 pub use field::Field;

@@ -180,7 +180,7 @@ impl<'a> Reader<'a> {
                     .collect()
             }
             "translate" | "rotate" | "scale" | "mirror" | "affine" | "offset" | "shell"
-            | "subdivide" | "dual" | "swept_volume" => {
+            | "subdivide" | "dual" | "swept_volume" | "color" => {
                 vec![(
                     "child".to_string(),
                     self.required(index, entries, "child", &p)?,
@@ -289,6 +289,7 @@ impl<'a> Reader<'a> {
                 },
                 &["thickness", "child"],
             ),
+            "color" => (NodeKind::Color(params.color("color")?), &["color", "child"]),
             "translate" => (
                 params.transform(TransformSpec::Translate(params.vec3("offset")?))?,
                 &["offset", "child"],
@@ -409,6 +410,28 @@ impl Params<'_, '_> {
             *o = self.number_at(i, key)?;
         }
         Ok(out)
+    }
+
+    /// A colour: `[r, g, b]` or `[r, g, b, a]` in `0..=1`, a CSS/SVG name or `#rrggbb[aa]`.
+    fn color(&self, key: &str) -> R<crate::color::Rgba> {
+        let at = self.at(key)?;
+        let expected = "expected [r, g, b], [r, g, b, a] (0 to 1), a colour name or \"#rrggbb\"";
+        let c = match &self.reader.doc.values[at as usize] {
+            Value::String(s) => crate::color::Rgba::parse(s)
+                .ok_or_else(|| self.fail(at, key, format!("unknown colour {s:?}")))?,
+            Value::Array(items) if items.len() == 3 => {
+                let [r, g, b] = self.numbers::<3>(at, key)?.map(|x| x as f32);
+                crate::color::Rgba([r, g, b, 1.0])
+            }
+            Value::Array(items) if items.len() == 4 => {
+                crate::color::Rgba(self.numbers::<4>(at, key)?.map(|x| x as f32))
+            }
+            _ => return Err(self.fail(at, key, expected)),
+        };
+        match c.problem() {
+            Some(_) => Err(self.fail(at, key, "expected channels between 0 and 1")),
+            None => Ok(c),
+        }
     }
 
     fn vec3(&self, key: &str) -> R<DVec3> {

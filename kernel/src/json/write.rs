@@ -119,6 +119,7 @@ fn members(kind: &NodeKind) -> String {
         | NodeKind::SmoothDifference { radius } => format!("\"radius\": {}", num(*radius)),
         NodeKind::Offset { distance } => format!("\"distance\": {}", num(*distance)),
         NodeKind::Shell { thickness } => format!("\"thickness\": {}", num(*thickness)),
+        NodeKind::Color(c) => format!("\"color\": [{}]", c.0.map(|x| num(f64::from(x))).join(", ")),
         NodeKind::Transform(t) => match t.spec {
             TransformSpec::Translate(v) => format!("\"offset\": {}", vec3(v)),
             TransformSpec::Rotate { axis, degrees } => {

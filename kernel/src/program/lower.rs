@@ -147,7 +147,10 @@ impl Lowerer {
                     super::Bits::of(-0.5 * thickness * sigma),
                 ))
             }
-            NodeKind::Transform(_) => self.fold(c, Instr::Min, Infinity::Positive),
+            // A colour changes nothing in the field: the child's value, no instruction.
+            NodeKind::Transform(_) | NodeKind::Color(_) => {
+                self.fold(c, Instr::Min, Infinity::Positive)
+            }
             NodeKind::Union => self.balanced(children, Instr::Min, Infinity::Positive),
             NodeKind::Intersection => self.balanced(children, Instr::Max, Infinity::Negative),
             // max(a, −b₁, −b₂, …) = max(a, −min(b₁, b₂, …)), exactly.

@@ -130,6 +130,11 @@ impl Solid {
     pub fn affine(&self, rows: [[f64; 4]; 3]) -> Solid {
         self.transformed(TransformSpec::Affine(rows))
     }
+
+    /// The solid painted `color` (geometry unchanged; an inner colour wins over this one).
+    pub fn color(&self, color: crate::color::Rgba) -> Solid {
+        Solid::from_parts(NodeKind::Color(color), vec![self.clone()])
+    }
 }
 
 impl Solid {

@@ -64,6 +64,9 @@ pub enum NodeKind {
         /// Wall thickness.
         thickness: f64,
     },
+    /// The single child painted: the field is the child's, unchanged (the innermost colour wins;
+    /// see [`Solid::colored_parts`]).
+    Color(crate::color::Rgba),
 }
 
 impl NodeKind {
@@ -86,14 +89,18 @@ impl NodeKind {
             NodeKind::SmoothDifference { .. } => "smooth_difference",
             NodeKind::Offset { .. } => "offset",
             NodeKind::Shell { .. } => "shell",
+            NodeKind::Color(_) => "color",
         }
     }
 
-    /// True for the kinds that take exactly one child (transforms, offset, shell).
+    /// True for the kinds that take exactly one child (transforms, offset, shell, color).
     pub fn is_unary(&self) -> bool {
         matches!(
             self,
-            NodeKind::Transform(_) | NodeKind::Offset { .. } | NodeKind::Shell { .. }
+            NodeKind::Transform(_)
+                | NodeKind::Offset { .. }
+                | NodeKind::Shell { .. }
+                | NodeKind::Color(_)
         )
     }
 }

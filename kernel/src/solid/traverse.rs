@@ -68,7 +68,7 @@ impl Solid {
                     NodeKind::SmoothUnion { .. } => results[start..]
                         .iter()
                         .fold(Aabb::empty(), |a, b| a.union(b)),
-                    NodeKind::Offset { .. } | NodeKind::Shell { .. } => {
+                    NodeKind::Offset { .. } | NodeKind::Shell { .. } | NodeKind::Color(_) => {
                         results.get(start).copied().unwrap_or(Aabb::empty())
                     }
                     kind => node_bbox(kind, &results[start..]),
@@ -127,7 +127,7 @@ fn check_node(solid: &Solid) -> Result<(), String> {
         NodeKind::Difference | NodeKind::SmoothDifference { .. } if n == 0 => {
             Err(format!("{name} needs at least one child"))
         }
-        NodeKind::Offset { .. } | NodeKind::Shell { .. } if n != 1 => {
+        NodeKind::Offset { .. } | NodeKind::Shell { .. } | NodeKind::Color(_) if n != 1 => {
             Err(format!("{name} takes exactly one child, found {n}"))
         }
         NodeKind::SmoothUnion { radius }
@@ -143,6 +143,7 @@ fn check_node(solid: &Solid) -> Result<(), String> {
         NodeKind::Shell { thickness } if !(thickness.is_finite() && *thickness > 0.0) => {
             Err("thickness: expected a positive number".into())
         }
+        NodeKind::Color(c) => c.problem().map_or(Ok(()), Err),
         _ => Ok(()),
     }
 }
@@ -238,5 +239,6 @@ pub(crate) fn node_bbox(kind: &NodeKind, c: &[Aabb]) -> Aabb {
         NodeKind::Shell { thickness } => c
             .first()
             .map_or(Aabb::empty(), |b| b.expanded(thickness.max(0.0) * 0.5)),
+        NodeKind::Color(_) => c.first().copied().unwrap_or(Aabb::empty()),
     }
 }
