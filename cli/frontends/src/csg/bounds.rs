@@ -87,6 +87,7 @@ pub fn tight_bbox(solid: &Solid) -> Option<Aabb> {
                 }
                 _ => Bound::Unknown,
             },
+            NodeKind::Color(_) => c.first().cloned().unwrap_or(Bound::Unknown),
             _ => Bound::Unknown,
         })
         .aabb()

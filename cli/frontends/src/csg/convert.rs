@@ -271,7 +271,20 @@ fn node(
         }
     };
     match stmt.name.as_str() {
-        "group" | "union" | "color" | "render" => group(stmt, children, Op2::Union, ctx),
+        "group" | "union" | "render" => group(stmt, children, Op2::Union, ctx),
+        "color" => {
+            let color = super::color::color_of(stmt).unwrap_or_else(|w| {
+                ctx.warn(stmt, w);
+                None
+            });
+            Ok(match group(stmt, children, Op2::Union, ctx)? {
+                Geom::Solid(s) => Geom::Solid(match color {
+                    Some(c) => s.color(c),
+                    None => s,
+                }),
+                other => other,
+            })
+        }
         "difference" => group(stmt, children, Op2::Difference, ctx),
         "intersection" => group(stmt, children, Op2::Intersection, ctx),
         "multmatrix" => {

@@ -43,6 +43,7 @@ mod args;
 mod bound;
 mod bounds;
 mod clip;
+mod color;
 mod contour;
 mod convert;
 mod convex;
@@ -65,6 +66,8 @@ mod text;
 mod fuzz;
 #[cfg(test)]
 mod tests;
+#[cfg(test)]
+mod tests_color;
 #[cfg(test)]
 mod tests_projection;
 #[cfg(test)]

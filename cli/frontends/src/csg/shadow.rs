@@ -79,6 +79,7 @@ fn exact_triangles(solid: &Solid) -> Option<Vec<[DVec3; 3]>> {
                 .map(|tri| tri.map(|p| t.forward.transform_point3(p)))
                 .collect()
         }),
+        NodeKind::Color(_) => c.first()?.clone(),
         _ => None,
     })
 }

@@ -6,6 +6,7 @@ use super::node;
 use super::shape::{Fallible, Shape, fail, num, num_or_vec3, shapes, vec3};
 use rhai::{Array, Dynamic, Engine, Map};
 use solidkit_kernel::Aabb;
+use solidkit_kernel::Rgba;
 use solidkit_kernel::Solid;
 use solidkit_kernel::json::MeshResolver;
 use solidkit_kernel::primitive::{Expr, Gyroid, Primitive};
@@ -215,6 +216,46 @@ fn transforms(engine: &mut Engine, b: Budget) {
         let t = num(&t, "shell thickness")?;
         b.unary(&s, |c| c.shell(t))
     });
+    engine.register_fn("color", move |s: Shape, c: Dynamic| {
+        let c = color(&c, None)?;
+        b.unary(&s, |s| s.color(c))
+    });
+    engine.register_fn("color", move |s: Shape, c: Dynamic, alpha: Dynamic| {
+        let alpha = num(&alpha, "color alpha")?;
+        let c = color(&c, Some(alpha))?;
+        b.unary(&s, |s| s.color(c))
+    });
+}
+
+/// A colour from a name or `"#rrggbb[aa]"` string or an array of 3 or 4 numbers in 0..1, with
+/// `alpha` replacing the alpha of a name or an `[r, g, b]`.
+fn color(c: &Dynamic, alpha: Option<f64>) -> Fallible<Rgba> {
+    let what = "color: expected a colour name, \"#rrggbb\", [r, g, b] or [r, g, b, a]";
+    let rgba = if let Some(s) = c.clone().try_cast::<rhai::ImmutableString>() {
+        let Some(c) = Rgba::parse(&s) else {
+            return fail(format!("color: unknown colour {:?}", s.as_str()));
+        };
+        match alpha {
+            Some(a) if !(s.starts_with('#') && matches!(s.len(), 5 | 9)) => c.with_alpha(a as f32),
+            _ => c,
+        }
+    } else if let Some(items) = c.clone().try_cast::<Array>() {
+        let v = items
+            .iter()
+            .map(|x| num(x, "color channel").map(|x| x as f32))
+            .collect::<Fallible<Vec<f32>>>()?;
+        match (v.as_slice(), alpha) {
+            (&[r, g, b], a) => Rgba([r, g, b, a.map_or(1.0, |a| a as f32)]),
+            (&[r, g, b, a], _) => Rgba([r, g, b, a]),
+            _ => return fail(what),
+        }
+    } else {
+        return fail(what);
+    };
+    match rgba.problem() {
+        Some(p) => fail(p),
+        None => Ok(rgba),
+    }
 }
 
 /// A 3 × 4 row-major matrix from three arrays of four numbers.

@@ -105,6 +105,18 @@ fn primitives_operations_and_transforms_match_json() {
             r#"{"type": "shell", "thickness": 0.1, "child": {"type": "sphere", "radius": 1}}"#,
         ),
         (
+            "sphere(1).color(\"red\")",
+            r#"{"type": "color", "color": [1, 0, 0, 1], "child": {"type": "sphere", "radius": 1}}"#,
+        ),
+        (
+            "sphere(1).color([0, 0.5, 1], 0.5)",
+            r#"{"type": "color", "color": [0, 0.5, 1, 0.5], "child": {"type": "sphere", "radius": 1}}"#,
+        ),
+        (
+            "sphere(1).color(\"#0000ff\").color(\"red\", 0.25)",
+            r#"{"type": "color", "color": [1, 0, 0, 0.25], "child": {"type": "color", "color": "blue", "child": {"type": "sphere", "radius": 1}}}"#,
+        ),
+        (
             "smooth_union(sphere(1), cube(1), 0.2)",
             r#"{"type": "smooth_union", "radius": 0.2, "children": [{"type": "sphere", "radius": 1}, {"type": "box", "size": 1}]}"#,
         ),
