@@ -39,6 +39,7 @@
 //! ```
 #![warn(missing_docs)]
 
+pub mod colors;
 pub mod curvature;
 pub mod dual_contouring;
 pub mod grid;

@@ -12,6 +12,7 @@
 use std::io::{self, Write};
 
 use crate::IndexedMesh;
+use crate::colors::FaceColors;
 
 /// `glTF` in little-endian.
 const MAGIC: u32 = 0x4654_6C67;
@@ -37,8 +38,56 @@ pub(super) fn check_writable(mesh: &IndexedMesh) -> Result<(), String> {
     }
 }
 
+/// The triangles of one primitive: its colour (`None`: no material) and triangle indices.
+struct Group {
+    color: Option<[u8; 4]>,
+    triangles: Vec<usize>,
+}
+
+/// The primitives: one per colour in palette order, then the uncoloured triangles; without
+/// colours, one primitive with every triangle in order.
+fn groups(mesh: &IndexedMesh, colors: Option<&FaceColors>) -> Vec<Group> {
+    let Some(c) = colors else {
+        return vec![Group {
+            color: None,
+            triangles: (0..mesh.triangles.len()).collect(),
+        }];
+    };
+    let mut groups: Vec<Group> = c
+        .palette
+        .iter()
+        .map(|&p| Group {
+            color: Some(p),
+            triangles: Vec::new(),
+        })
+        .chain([Group {
+            color: None,
+            triangles: Vec::new(),
+        }])
+        .collect();
+    let none = groups.len() - 1;
+    for t in 0..mesh.triangles.len() {
+        let g = match c.faces.get(t) {
+            Some(&i) if (i as usize) < none => i as usize,
+            _ => none,
+        };
+        groups[g].triangles.push(t);
+    }
+    groups.retain(|g| !g.triangles.is_empty());
+    groups
+}
+
+/// glTF's `baseColorFactor` is linear: the sRGB channel `c` (0..1) in linear light.
+fn srgb_to_linear(c: f64) -> f64 {
+    if c <= 0.04045 {
+        c / 12.92
+    } else {
+        ((c + 0.055) / 1.055).powf(2.4)
+    }
+}
+
 /// The JSON chunk's text.
-fn json(mesh: &IndexedMesh, positions_len: usize, indices_len: usize) -> String {
+fn json(mesh: &IndexedMesh, groups: &[Group], positions_len: usize) -> String {
     let asset = r#""asset":{"version":"2.0","generator":"solidkit"}"#;
     if mesh.triangles.is_empty() {
         return format!(r#"{{{asset},"scene":0,"scenes":[{{"nodes":[]}}]}}"#);
@@ -52,36 +101,82 @@ fn json(mesh: &IndexedMesh, positions_len: usize, indices_len: usize) -> String 
         }
     }
     let triple = |v: [f32; 3]| format!("[{},{},{}]", v[0], v[1], v[2]);
+    let indices_len: usize = groups.iter().map(|g| 12 * g.triangles.len()).sum();
+    let (mut primitives, mut views, mut accessors, mut materials) =
+        (Vec::new(), Vec::new(), Vec::new(), Vec::new());
+    views.push(format!(
+        "{{\"buffer\":0,\"byteOffset\":0,\"byteLength\":{positions_len},\"target\":34962}}"
+    ));
+    accessors.push(format!(
+        "{{\"bufferView\":0,\"componentType\":5126,\"count\":{},\"type\":\"VEC3\",\"min\":{},\"max\":{}}}",
+        mesh.positions.len(),
+        triple(lo),
+        triple(hi)
+    ));
+    let mut offset = positions_len;
+    for g in groups {
+        let k = accessors.len();
+        let len = 12 * g.triangles.len();
+        views.push(format!(
+            "{{\"buffer\":0,\"byteOffset\":{offset},\"byteLength\":{len},\"target\":34963}}"
+        ));
+        accessors.push(format!(
+            "{{\"bufferView\":{k},\"componentType\":5125,\"count\":{},\"type\":\"SCALAR\"}}",
+            3 * g.triangles.len()
+        ));
+        offset += len;
+        let material = match g.color {
+            None => String::new(),
+            Some(c) => {
+                let [r, gr, b] = [c[0], c[1], c[2]].map(|x| srgb_to_linear(f64::from(x) / 255.0));
+                let a = f64::from(c[3]) / 255.0;
+                let mode = if c[3] < 255 { "BLEND" } else { "OPAQUE" };
+                materials.push(format!(
+                    "{{\"pbrMetallicRoughness\":{{\"baseColorFactor\":[{r},{gr},{b},{a}],\"metallicFactor\":0,\"roughnessFactor\":1}},\"alphaMode\":\"{mode}\"}}"
+                ));
+                format!(",\"material\":{}", materials.len() - 1)
+            }
+        };
+        primitives.push(format!(
+            "{{\"attributes\":{{\"POSITION\":0}},\"indices\":{k}{material},\"mode\":4}}"
+        ));
+    }
+    let materials = if materials.is_empty() {
+        String::new()
+    } else {
+        format!(",\"materials\":[{}]", materials.join(","))
+    };
     format!(
         concat!(
             "{{{asset},\"scene\":0,\"scenes\":[{{\"nodes\":[0]}}],",
             "\"nodes\":[{{\"mesh\":0,\"rotation\":{rotation}}}],",
-            "\"meshes\":[{{\"primitives\":[{{\"attributes\":{{\"POSITION\":0}},\"indices\":1,\"mode\":4}}]}}],",
+            "\"meshes\":[{{\"primitives\":[{primitives}]}}]{materials},",
             "\"buffers\":[{{\"byteLength\":{total}}}],",
-            "\"bufferViews\":[{{\"buffer\":0,\"byteOffset\":0,\"byteLength\":{p},\"target\":34962}},",
-            "{{\"buffer\":0,\"byteOffset\":{p},\"byteLength\":{i},\"target\":34963}}],",
-            "\"accessors\":[{{\"bufferView\":0,\"componentType\":5126,\"count\":{v},\"type\":\"VEC3\",",
-            "\"min\":{min},\"max\":{max}}},",
-            "{{\"bufferView\":1,\"componentType\":5125,\"count\":{n},\"type\":\"SCALAR\"}}]}}"
+            "\"bufferViews\":[{views}],",
+            "\"accessors\":[{accessors}]}}"
         ),
         asset = asset,
         rotation = Z_UP_TO_Y_UP,
+        primitives = primitives.join(","),
+        materials = materials,
         total = positions_len + indices_len,
-        p = positions_len,
-        i = indices_len,
-        v = mesh.positions.len(),
-        n = 3 * mesh.triangles.len(),
-        min = triple(lo),
-        max = triple(hi),
+        views = views.join(","),
+        accessors = accessors.join(","),
     )
 }
 
-/// Writes `mesh` as GLB (the mesh must pass [`check_writable`]).
-pub(super) fn write(out: &mut dyn Write, mesh: &IndexedMesh) -> io::Result<()> {
+/// Writes `mesh` as GLB (the mesh must pass [`check_writable`]); with `colors`, one primitive
+/// per colour with a material whose `baseColorFactor` is the colour (alpha below 1: `BLEND`).
+pub(super) fn write(
+    out: &mut dyn Write,
+    mesh: &IndexedMesh,
+    colors: Option<&FaceColors>,
+) -> io::Result<()> {
     let empty = mesh.triangles.is_empty();
+    let groups = groups(mesh, colors);
     let positions_len = if empty { 0 } else { 12 * mesh.positions.len() };
     let indices_len = if empty { 0 } else { 12 * mesh.triangles.len() };
-    let mut text = json(mesh, positions_len, indices_len).into_bytes();
+    let mut text = json(mesh, &groups, positions_len).into_bytes();
     text.resize(text.len().next_multiple_of(4), b' ');
     let bin_len = positions_len + indices_len; // multiples of 4 already
     let too_big = || io::Error::new(io::ErrorKind::InvalidInput, "GLB over 4 GiB");
@@ -106,9 +201,11 @@ pub(super) fn write(out: &mut dyn Write, mesh: &IndexedMesh) -> io::Result<()> {
             out.write_all(&c.to_le_bytes())?;
         }
     }
-    for t in &mesh.triangles {
-        for i in t {
-            out.write_all(&i.to_le_bytes())?;
+    for g in &groups {
+        for &t in &g.triangles {
+            for i in mesh.triangles[t] {
+                out.write_all(&i.to_le_bytes())?;
+            }
         }
     }
     Ok(())
@@ -121,7 +218,7 @@ mod tests {
 
     fn glb(mesh: &IndexedMesh) -> Vec<u8> {
         let mut out = Vec::new();
-        write(&mut out, mesh).unwrap();
+        write(&mut out, mesh, None).unwrap();
         out
     }
 

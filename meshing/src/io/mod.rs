@@ -33,6 +33,7 @@ mod obj;
 mod obj_scan;
 mod off;
 mod ply;
+mod ply_colors;
 mod ply_header;
 mod ply_scalars;
 mod polygon;
@@ -51,6 +52,8 @@ mod xml;
 mod zip;
 
 #[cfg(test)]
+mod color_tests;
+#[cfg(test)]
 mod container_tests;
 #[cfg(test)]
 mod polygon_mesh_tests;
@@ -63,6 +66,7 @@ use std::path::Path;
 use crate::IndexedMesh;
 use solidkit_kernel::files::{DEFAULT_MAX_FILE_BYTES, read_regular_file};
 
+use crate::colors::FaceColors;
 pub use atomic::{remove_temporary_files_and_exit, write_atomic};
 pub use error::{Location, MeshIoError};
 pub use ply_scalars::write_ply_with_scalars;
@@ -203,6 +207,29 @@ pub fn write_mesh_with(
     write_atomic(path, |out| encode(out, mesh, format, opts.encoding))
 }
 
+/// Writes a mesh with per-triangle colours as [`write_mesh_with`] does: 3MF (`<basematerials>`),
+/// PLY (face `red green blue alpha`) and GLB (one primitive and material per colour) carry them;
+/// STL, OBJ and OFF are written without. `colors: None` writes exactly what
+/// [`write_mesh_with`] writes.
+pub fn write_colored_mesh_with(
+    path: &Path,
+    mesh: &IndexedMesh,
+    colors: Option<&FaceColors>,
+    opts: &WriteOptions,
+) -> Result<(), MeshIoError> {
+    let format = match opts.format {
+        Some(format) => format,
+        None => MeshFormat::from_path(path)?,
+    };
+    check_writable(mesh, format).map_err(|message| MeshIoError::InvalidMesh {
+        path: path.to_path_buf(),
+        message,
+    })?;
+    write_atomic(path, |out| {
+        encode_colored(out, mesh, colors, format, opts.encoding)
+    })
+}
+
 /// Writes `mesh` to `out` in `format` (the mesh must pass [`check_writable`]).
 fn encode(
     out: &mut dyn Write,
@@ -210,13 +237,25 @@ fn encode(
     format: MeshFormat,
     encoding: Encoding,
 ) -> std::io::Result<()> {
-    match format {
-        MeshFormat::Stl => stl::write(out, mesh, encoding),
-        MeshFormat::Obj => obj::write(out, mesh),
-        MeshFormat::Ply => ply::write(out, mesh, encoding),
-        MeshFormat::Off => off::write(out, mesh),
-        MeshFormat::ThreeMf => threemf::write(out, mesh),
-        MeshFormat::Glb => glb::write(out, mesh),
+    encode_colored(out, mesh, None, format, encoding)
+}
+
+/// [`encode`] with optional per-triangle colours.
+pub(crate) fn encode_colored(
+    out: &mut dyn Write,
+    mesh: &IndexedMesh,
+    colors: Option<&FaceColors>,
+    format: MeshFormat,
+    encoding: Encoding,
+) -> std::io::Result<()> {
+    match (format, colors) {
+        (MeshFormat::Stl, _) => stl::write(out, mesh, encoding),
+        (MeshFormat::Obj, _) => obj::write(out, mesh),
+        (MeshFormat::Ply, Some(c)) => ply_colors::write(out, mesh, c, encoding),
+        (MeshFormat::Ply, None) => ply::write(out, mesh, encoding),
+        (MeshFormat::Off, _) => off::write(out, mesh),
+        (MeshFormat::ThreeMf, c) => threemf::write(out, mesh, c),
+        (MeshFormat::Glb, c) => glb::write(out, mesh, c),
     }
 }
 

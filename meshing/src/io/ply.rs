@@ -423,7 +423,7 @@ pub(super) fn write_faces<F: AsRef<[u32]>>(
 }
 
 /// `int` indices where they fit (most widely read), `uint` otherwise.
-fn index_type(vertex_count: usize) -> &'static str {
+pub(super) fn index_type(vertex_count: usize) -> &'static str {
     if i32::try_from(vertex_count).is_ok() {
         "int"
     } else {

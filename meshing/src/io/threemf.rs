@@ -12,6 +12,7 @@ use std::io::{self, Write};
 
 use super::zip::{ZipEntry, write_stored};
 use crate::IndexedMesh;
+use crate::colors::{DEFAULT_COLOR, FaceColors};
 
 /// Path of the model part inside the package.
 pub const MODEL_PATH: &str = "3D/3dmodel.model";
@@ -29,19 +30,56 @@ const RELATIONSHIPS: &str = r#"<?xml version="1.0" encoding="UTF-8"?>
 </Relationships>
 "#;
 
-/// The model part's XML.
-fn model_xml(mesh: &IndexedMesh) -> io::Result<Vec<u8>> {
+/// The `<basematerials>` group's id (the object stays `id="1"`).
+const MATERIALS_ID: u32 = 2;
+
+/// The model part's XML; with `colors`, a `<basematerials>` group (one `<base>` per colour, plus
+/// the default colour when some triangle has none) referenced by the object (one colour) or by
+/// each triangle (`pid`, `p1`).
+fn model_xml(mesh: &IndexedMesh, colors: Option<&FaceColors>) -> io::Result<Vec<u8>> {
     let mut x = Vec::with_capacity(64 * mesh.positions.len() + 48 * mesh.triangles.len() + 512);
     x.write_all(
         br#"<?xml version="1.0" encoding="UTF-8"?>
 <model unit="millimeter" xml:lang="en-US" xmlns="http://schemas.microsoft.com/3dmanufacturing/core/2015/02">
  <metadata name="Application">solidkit</metadata>
  <resources>
-  <object id="1" type="model">
-   <mesh>
-    <vertices>
 "#,
     )?;
+    // Per triangle: the base index, when the object needs per-triangle properties.
+    let mut per_triangle: Option<Vec<u32>> = None;
+    match colors {
+        Some(c) if !mesh.triangles.is_empty() => {
+            let mut bases = c.palette.clone();
+            let default = bases.len() as u32;
+            if c.has_uncolored() {
+                bases.push(DEFAULT_COLOR);
+            }
+            writeln!(x, "  <basematerials id=\"{MATERIALS_ID}\">")?;
+            for (k, [r, g, b, a]) in bases.iter().enumerate() {
+                writeln!(
+                    x,
+                    "   <base name=\"color {k}\" displaycolor=\"#{r:02X}{g:02X}{b:02X}{a:02X}\"/>"
+                )?;
+            }
+            x.write_all(b"  </basematerials>\n")?;
+            let index: Vec<u32> = (0..mesh.triangles.len())
+                .map(|t| match c.faces.get(t) {
+                    Some(&i) if i != FaceColors::NONE => i,
+                    _ => default,
+                })
+                .collect();
+            let first = index[0];
+            writeln!(
+                x,
+                "  <object id=\"1\" type=\"model\" pid=\"{MATERIALS_ID}\" pindex=\"{first}\">"
+            )?;
+            if index.iter().any(|&i| i != first) {
+                per_triangle = Some(index);
+            }
+        }
+        _ => x.write_all(b"  <object id=\"1\" type=\"model\">\n")?,
+    }
+    x.write_all(b"   <mesh>\n    <vertices>\n")?;
     for p in &mesh.positions {
         writeln!(
             x,
@@ -50,8 +88,15 @@ fn model_xml(mesh: &IndexedMesh) -> io::Result<Vec<u8>> {
         )?;
     }
     x.write_all(b"    </vertices>\n    <triangles>\n")?;
-    for [a, b, c] in &mesh.triangles {
-        writeln!(x, "     <triangle v1=\"{a}\" v2=\"{b}\" v3=\"{c}\"/>")?;
+    for (t, [a, b, c]) in mesh.triangles.iter().enumerate() {
+        match &per_triangle {
+            Some(index) => writeln!(
+                x,
+                "     <triangle v1=\"{a}\" v2=\"{b}\" v3=\"{c}\" pid=\"{MATERIALS_ID}\" p1=\"{}\"/>",
+                index[t]
+            )?,
+            None => writeln!(x, "     <triangle v1=\"{a}\" v2=\"{b}\" v3=\"{c}\"/>")?,
+        }
     }
     x.write_all(
         br#"    </triangles>
@@ -67,9 +112,13 @@ fn model_xml(mesh: &IndexedMesh) -> io::Result<Vec<u8>> {
     Ok(x)
 }
 
-/// Writes `mesh` as a 3MF package.
-pub(super) fn write(out: &mut dyn Write, mesh: &IndexedMesh) -> io::Result<()> {
-    let model = model_xml(mesh)?;
+/// Writes `mesh` as a 3MF package, with per-triangle colours when `colors` is given.
+pub(super) fn write(
+    out: &mut dyn Write,
+    mesh: &IndexedMesh,
+    colors: Option<&FaceColors>,
+) -> io::Result<()> {
+    let model = model_xml(mesh, colors)?;
     write_stored(
         out,
         &[
@@ -98,7 +147,7 @@ mod tests {
     fn coordinates_are_plain_decimals_that_read_back_exactly() {
         let p = DVec3::new(0.1, -1e-7, 123_456_789.125);
         let mesh = IndexedMesh::new(vec![p, DVec3::X, DVec3::Y], vec![[0, 1, 2]]);
-        let xml = String::from_utf8(model_xml(&mesh).unwrap()).unwrap();
+        let xml = String::from_utf8(model_xml(&mesh, None).unwrap()).unwrap();
         let tag = xml.lines().find(|l| l.contains("<vertex")).unwrap();
         assert_eq!(
             tag.trim(),
