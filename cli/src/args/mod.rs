@@ -250,6 +250,10 @@ pub struct MeshArgs {
     /// Skip the self-intersection count of the report.
     #[arg(long)]
     pub no_self_intersections: bool,
+    /// Write no colours: by default the tree's `color` nodes colour the triangles of 3MF
+    /// (basematerials), PLY (face red/green/blue/alpha) and GLB (a material per colour) output.
+    #[arg(long)]
+    pub no_colors: bool,
     /// No progress bar (one is drawn on standard error when it is a terminal and meshing takes
     /// more than half a second).
     #[arg(long)]

@@ -9,7 +9,7 @@ use glam::DVec3;
 use serde_json::json;
 use solidkit_kernel::Aabb;
 use solidkit_meshing::ReportOptions;
-use solidkit_meshing::io::write_mesh;
+use solidkit_meshing::io::{WriteOptions, write_colored_mesh_with};
 use solidkit_meshing::pipeline::{Domain, MeshOptions, PipelineError, Prepared, warnings};
 use solidkit_meshing::refine::RefineOptions;
 use std::time::Instant;
@@ -81,11 +81,20 @@ pub fn run(a: &MeshArgs) -> Result<u8> {
         warnings.push(w);
     }
     let (mesh, stats, fine) = (&meshed.mesh, &meshed.stats, &meshed.spec);
+    // Colours only when the tree has `color` nodes (no cost otherwise).
+    let colors = if a.no_colors {
+        None
+    } else {
+        meshed.face_colors(&solid)
+    };
+    let write = |out: &std::path::Path| {
+        write_colored_mesh_with(out, mesh, colors.as_ref(), &WriteOptions::default())
+    };
     // The text report goes out before the file is written, so a closed or full standard output
     // (exit 2) leaves an existing output file untouched; JSON only follows a written file.
     if a.json {
         if let Some(out) = &a.output {
-            write_mesh(out, mesh)?;
+            write(out)?;
         }
         let extra = [
             ("time_s", json!(time_s)),
@@ -106,6 +115,7 @@ pub fn run(a: &MeshArgs) -> Result<u8> {
             ("samples_evaluated", json!(stats.samples_evaluated)),
             ("program_length", json!(meshed.program_length)),
             ("warnings", json!(warnings)),
+            ("colors", json!(colors.as_ref().map_or(0, |c| c.used()))),
         ];
         outln!("{}", report::to_json(&r, &extra)?)?;
     } else {
@@ -124,8 +134,11 @@ pub fn run(a: &MeshArgs) -> Result<u8> {
         outln!("time: {time_s:.3} s")?;
         outln!("report time: {report_s:.3} s")?;
         if let Some(out) = &a.output {
-            write_mesh(out, mesh)?;
-            outln!("wrote: {}", out.display())?;
+            write(out)?;
+            match &colors {
+                Some(c) => outln!("wrote: {} ({} colours)", out.display(), c.used())?,
+                None => outln!("wrote: {}", out.display())?,
+            }
         }
     }
     if let Some(path) = &a.preview {
