@@ -11,7 +11,8 @@ use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
 use serde_json::Value;
-use solidkit_meshing::io::write_mesh;
+use solidkit_meshing::colors::{DEFAULT_COLOR, FaceColors};
+use solidkit_meshing::io::{WriteOptions, write_colored_mesh_with};
 use solidkit_meshing::pipeline::{Meshed, warnings};
 use solidkit_meshing::{IndexedMesh, ReportOptions, TopologyReport};
 use std::path::PathBuf;
@@ -36,6 +37,7 @@ pub struct PyMesh {
     mesh: IndexedMesh,
     warnings: Vec<String>,
     info: Value,
+    colors: Option<FaceColors>,
 }
 
 /// `v` as a read-only array.
@@ -117,6 +119,7 @@ impl PyMesh {
             mesh,
             warnings,
             info,
+            colors: None,
         })
     }
 
@@ -124,6 +127,7 @@ impl PyMesh {
     pub fn from_meshed(
         py: Python<'_>,
         meshed: Meshed,
+        colors: Option<FaceColors>,
         warnings: Vec<String>,
         asked: Asked<'_>,
     ) -> PyResult<PyMesh> {
@@ -140,8 +144,11 @@ impl PyMesh {
             "samples_evaluated": meshed.stats.samples_evaluated,
             "program_length": meshed.program_length,
             "lost_solid": meshed.lost_solid,
+            "colors": colors.as_ref().map_or(0, |c| c.used()),
         });
-        PyMesh::from_indexed(py, meshed.mesh, warnings, info)
+        let mut mesh = PyMesh::from_indexed(py, meshed.mesh, warnings, info)?;
+        mesh.colors = colors;
+        Ok(mesh)
     }
 
     /// The Rust mesh.
@@ -205,6 +212,20 @@ impl PyMesh {
         self.faces.clone_ref(py)
     }
 
+    /// The triangles' colours from the tree's `color` nodes, M × 4 uint8 (red, green, blue,
+    /// alpha; uncoloured triangles get the default `#f9d72cff`), or None when the tree had none.
+    #[getter]
+    fn face_colors<'py>(&self, py: Python<'py>) -> PyResult<Option<Bound<'py, PyArray2<u8>>>> {
+        let Some(c) = &self.colors else {
+            return Ok(None);
+        };
+        let flat: Vec<u8> = (0..self.mesh.triangles.len())
+            .flat_map(|t| c.color_or(t, DEFAULT_COLOR))
+            .collect();
+        let n = self.mesh.triangles.len();
+        Ok(Some(frozen(PyArray1::from_vec(py, flat).reshape([n, 4])?)?))
+    }
+
     /// What may be wrong or missing in this mesh (open operands, refinement stopped by a
     /// limit, ...), one line each.
     #[getter]
@@ -233,9 +254,12 @@ impl PyMesh {
     }
 
     /// Writes the mesh; the format follows the extension (.stl, .obj, .ply, .off, .3mf, .glb).
-    /// The file is replaced atomically.
-    fn save(&self, py: Python<'_>, path: PathBuf) -> PyResult<()> {
-        py.detach(|| write_mesh(&path, &self.mesh))
+    /// 3MF, PLY and GLB carry `face_colors` when there are any (`colors=False`: none). The file
+    /// is replaced atomically.
+    #[pyo3(signature = (path, *, colors = true))]
+    fn save(&self, py: Python<'_>, path: PathBuf, colors: bool) -> PyResult<()> {
+        let c = self.colors.as_ref().filter(|_| colors);
+        py.detach(|| write_colored_mesh_with(&path, &self.mesh, c, &WriteOptions::default()))
             .map_err(errors::io)
     }
 

@@ -134,9 +134,10 @@ pub fn mesh(
     let result = interruptible(py, a.threads, progress, &cancel, || {
         let prepared = Prepared::new(solid, &options)?;
         let meshed = prepared.mesh()?;
-        Ok::<_, PipelineError>((prepared.warnings, meshed))
+        let colors = meshed.face_colors(solid);
+        Ok::<_, PipelineError>((prepared.warnings, (meshed, colors)))
     })?;
-    let (mut warnings, meshed) = result.map_err(|e| match e {
+    let (mut warnings, (meshed, colors)) = result.map_err(|e| match e {
         PipelineError::Unbounded => crate::errors::meshing(
             "the solid is unbounded; pass bounds=((xmin, ymin, zmin), (xmax, ymax, zmax))",
         ),
@@ -155,5 +156,5 @@ pub fn mesh(
         simplify: a.target_error.or(a.simplify),
         target_error: a.target_error,
     };
-    PyMesh::from_meshed(py, meshed, warnings, asked)
+    PyMesh::from_meshed(py, meshed, colors, warnings, asked)
 }

@@ -314,6 +314,40 @@ impl PySolid {
         self.derive(self.solid.shell(thickness))
     }
 
+    /// Painted: `color` a CSS/SVG name, `"#rrggbb[aa]"` or 3 or 4 numbers in 0..1; `alpha`
+    /// replaces the alpha of a name or of 3 numbers. Geometry is unchanged; the innermost colour
+    /// wins, and `Mesh.face_colors` and `Mesh.save` (3MF, PLY, GLB) carry it.
+    #[pyo3(signature = (color, alpha = None))]
+    fn color(&self, color: &Bound<'_, PyAny>, alpha: Option<f64>) -> PyResult<PySolid> {
+        use solidkit_kernel::Rgba;
+        let bad = || {
+            pyo3::exceptions::PyValueError::new_err(
+                "color: expected a colour name, \"#rrggbb\" or 3 or 4 numbers between 0 and 1",
+            )
+        };
+        let c = if let Ok(s) = color.extract::<String>() {
+            let c = Rgba::parse(&s).ok_or_else(|| {
+                pyo3::exceptions::PyValueError::new_err(format!("color: unknown colour {s:?}"))
+            })?;
+            let hex_alpha = s.trim().starts_with('#') && matches!(s.trim().len(), 5 | 9);
+            match alpha {
+                Some(a) if !hex_alpha => c.with_alpha(a as f32),
+                _ => c,
+            }
+        } else {
+            let v: Vec<f64> = color.extract().map_err(|_| bad())?;
+            match (v.as_slice(), alpha) {
+                (&[r, g, b], a) => Rgba([r, g, b, a.unwrap_or(1.0)].map(|x| x as f32)),
+                (&[r, g, b, a], _) => Rgba([r, g, b, a].map(|x| x as f32)),
+                _ => return Err(bad()),
+            }
+        };
+        if c.problem().is_some() {
+            return Err(bad());
+        }
+        Ok(self.derive(self.solid.color(c)))
+    }
+
     fn __or__(&self, other: &PySolid) -> PySolid {
         self.pair(other, self.solid.union(&other.solid))
     }

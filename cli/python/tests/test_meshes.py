@@ -193,3 +193,31 @@ def test_ctrl_c_stops_a_long_mesh_with_keyboard_interrupt():
     out, _ = p.communicate(timeout=30)
     assert p.returncode == 3, out
     assert time.monotonic() - sent < 3, "the mesher should stop soon after Ctrl-C"
+
+
+def test_colours_reach_face_colors_the_report_and_saved_files(tmp_path):
+    red_cube = sk.box((10, 10, 10)).color("red")
+    blue_ball = sk.sphere(6.5).color([0, 0, 1])
+    m = (red_cube - blue_ball).mesh(resolution=48)
+    c = m.face_colors
+    assert c.dtype == np.uint8 and c.shape == (len(m.faces), 4)
+    centroids = m.vertices[m.faces].mean(axis=1)
+    on_cube = np.abs(np.abs(centroids).max(axis=1) - 5) < 0.02
+    on_ball = np.abs(np.linalg.norm(centroids, axis=1) - 6.5) < 0.05
+    assert (c[on_cube & ~on_ball] == [255, 0, 0, 255]).all()
+    assert (c[on_ball & ~on_cube] == [0, 0, 255, 255]).all()
+    assert m.report()["colors"] == 2
+    plain = (sk.box((10, 10, 10)) - sk.sphere(6.5)).mesh(resolution=48)
+    assert plain.face_colors is None and plain.report()["colors"] == 0
+    assert np.array_equal(plain.faces, m.faces) and np.array_equal(plain.vertices, m.vertices)
+    m.save(tmp_path / "c.3mf")
+    assert b"basematerials" in (tmp_path / "c.3mf").read_bytes()
+    m.save(tmp_path / "n.3mf", colors=False)
+    plain.save(tmp_path / "p.3mf")
+    assert (tmp_path / "n.3mf").read_bytes() == (tmp_path / "p.3mf").read_bytes()
+    with pytest.raises(ValueError, match="unknown colour"):
+        sk.sphere(1).color("nosuchcolour")
+    with pytest.raises(ValueError):
+        sk.sphere(1).color([2, 0, 0])
+    inner = sk.sphere(1).color("lime").color("red", 0.5).mesh(resolution=16).face_colors
+    assert (inner == [0, 255, 0, 255]).all()

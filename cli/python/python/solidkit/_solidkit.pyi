@@ -52,6 +52,8 @@ class Solid:
         """Grown by ``distance`` (shrunk when negative)."""
     def shell(self, thickness: float) -> Solid:
         """A hollow shell of the given thickness around the surface."""
+    def color(self, color: Union[str, Sequence[float]], alpha: Optional[float] = None) -> Solid:
+        """Painted: a CSS/SVG name, "#rrggbb[aa]" or 3 or 4 numbers in 0..1 (geometry unchanged)."""
     def __or__(self, other: Solid) -> Solid:
         """Union."""
     def __and__(self, other: Solid) -> Solid:
@@ -115,14 +117,18 @@ class Mesh:
     def faces(self) -> npt.NDArray[np.int64]:
         """Triangles as vertex indices, M x 3 int64."""
     @property
+    def face_colors(self) -> Optional[npt.NDArray[np.uint8]]:
+        """Per-triangle colours, M x 4 uint8 (RGBA), or None when the tree had no colours."""
+    @property
     def warnings(self) -> list[str]:
         """What may be wrong or missing in this mesh, one line each."""
     def report(
         self, *, self_intersections: bool = True, threads: Optional[int] = None
     ) -> dict[str, Any]:
         """The topology report with the keys of ``solidkit mesh --json``."""
-    def save(self, path: Path) -> None:
-        """Writes the mesh (.stl, .obj, .ply, .off, .3mf, .glb by extension), atomically."""
+    def save(self, path: Path, *, colors: bool = True) -> None:
+        """Writes the mesh (.stl, .obj, .ply, .off, .3mf, .glb by extension), atomically;
+        3MF, PLY and GLB carry ``face_colors`` unless ``colors=False``."""
     def to_trimesh(self) -> Any:
         """A ``trimesh.Trimesh`` with the same arrays."""
     def to_manifold(self) -> Any:
