@@ -173,7 +173,7 @@ fn mesh_counts_self_intersections_unless_skipped() {
     assert_eq!(full["self_intersections_method"], "construction");
     let dc = run(&["--method", "dc"]);
     assert_eq!(dc["self_intersections"], 0);
-    assert_eq!(dc["self_intersections_method"], "tested");
+    assert_eq!(dc["self_intersections_method"], "construction");
     let skipped = run(&["--no-self-intersections"]);
     assert!(skipped["self_intersections"].is_null());
     assert!(skipped["self_intersections_method"].is_null());

@@ -76,6 +76,9 @@ pub(crate) struct Block {
     pub evaluation_s: f64,
     /// Thin and hidden features in the block (sparse path only).
     pub thin: crate::octree::ThinCounts,
+    /// Cells whose configuration the decider should never give (their patches may lack
+    /// separating planes): the run then claims nothing ([`super::certify::claim`]).
+    pub unreachable: usize,
 }
 
 impl Block {
@@ -221,7 +224,10 @@ pub(crate) fn build<F: Evaluator>(
                 // The marching-cubes configuration, decided on the same f32 samples.
                 let config =
                     cell_config(usize::from(mask), |c| values[base + corner[c as usize]]) as Config;
-                debug_assert!(reachable(config), "the decider never gives {config:#x}");
+                if !reachable(config) {
+                    debug_assert!(false, "the decider never gives {config:#x}");
+                    b.unreachable += 1;
+                }
                 b.configs[ci] = config;
                 let cell = table.get(config);
                 b.first[ci] = b.vertices.len() as u32;

@@ -14,7 +14,8 @@ use rayon::prelude::*;
 use solidkit_kernel::Evaluator;
 
 /// One block's quads, and its polygons through split faces (with their crossing points).
-type BlockPolygons = (Vec<Quad>, Vec<(Vec<Corner>, DVec3)>);
+/// A block's quads, its fanned polygons, and how many of its edges got no polygon.
+type BlockPolygons = (Vec<Quad>, Vec<(Vec<Corner>, DVec3)>, usize);
 
 /// A polygon corner before split-face vertices are numbered.
 #[derive(Debug, Clone, Copy)]
@@ -84,6 +85,9 @@ pub(crate) struct Contour {
     pub quads: Vec<Vec<Quad>>,
     /// Fanned polygons.
     pub specials: Vec<Special>,
+    /// Owned crossing edges left without a polygon (a cell around them outside the grid): the
+    /// mesh is open there and the run claims nothing ([`super::certify::claim`]).
+    pub dropped: usize,
 }
 
 /// Builds the polygons of every block's owned edges and places the split-face vertices.
@@ -111,14 +115,15 @@ pub(crate) fn assemble<P: Probe>(
         .map_init(P::Scratch::default, |scratch, b| {
             let mut quads = Vec::with_capacity(b.edges.len());
             let mut specials = Vec::new();
+            let mut dropped = 0;
             for e in &b.edges {
                 match polygon(b, e, &cells, spec, probe, scratch) {
                     Some(Ok(q)) => quads.push(q),
                     Some(Err(corners)) => specials.push((corners, e.point)),
-                    None => {}
+                    None => dropped += 1,
                 }
             }
-            (quads, specials)
+            (quads, specials, dropped)
         })
         .collect();
     let mut positions: Vec<DVec3> = Vec::with_capacity(count as usize);
@@ -127,7 +132,7 @@ pub(crate) fn assemble<P: Probe>(
     }
     let mut keys: Vec<FaceKey> = per_block
         .iter()
-        .flat_map(|(_, s)| s.iter().flat_map(|(c, _)| c.iter()))
+        .flat_map(|(_, s, _)| s.iter().flat_map(|(c, _)| c.iter()))
         .filter_map(|c| match c {
             Corner::Face(k) => Some(*k),
             Corner::Vertex(_) => None,
@@ -141,8 +146,10 @@ pub(crate) fn assemble<P: Probe>(
     }
     let mut quads = Vec::with_capacity(blocks.len());
     let mut specials = Vec::new();
-    for (q, s) in per_block {
+    let mut dropped = 0;
+    for (q, s, d) in per_block {
         quads.push(q);
+        dropped += d;
         for (corners, point) in s {
             let corners = corners
                 .iter()
@@ -161,6 +168,7 @@ pub(crate) fn assemble<P: Probe>(
         bases,
         quads,
         specials,
+        dropped,
     }
 }
 

@@ -15,7 +15,8 @@
 //! such a face gets one vertex per segment and the polygons through it are fanned from a centre
 //! vertex, so no mesh edge ever has more than two triangles and every vertex link is one cycle.
 //!
-//! Free of self-intersections by construction (`certify`): every piece of surface inside a cell
+//! Free of self-intersections by construction (`certify`; a run claims it, so that the report
+//! need not test it, when the premises of `claim` hold): every piece of surface inside a cell
 //! lies in a cone from the cell's patch vertex (kept strictly inside the cell) over a zone of the
 //! cell's boundary, and the zones of different crossing edges are disjoint. A quad stays two
 //! triangles only where a local test shows its pieces keep to their cones; otherwise it is fanned
@@ -36,6 +37,7 @@ mod adapt;
 mod block;
 mod cells;
 mod certify;
+mod claim;
 mod contour;
 mod crossing;
 mod emit;
@@ -112,6 +114,8 @@ pub fn mesh_dc_into<E: Evaluator>(
         }
         None => emit::triangles(&contour, &mut positions, None),
     };
+    let unreachable = blocks.iter().map(|b| b.unreachable).sum();
+    stats.intersection_free = claim::claim(&spec, opts.tolerance, unreachable, contour.dropped);
     drop((blocks, evaluators));
     write(&positions, &triangles, sink);
     stats.assemble_s = now(opts.sparse.clock.as_ref()) - t;
@@ -176,5 +180,7 @@ mod tests;
 mod tests_accuracy;
 #[cfg(test)]
 mod tests_checkerboard;
+#[cfg(test)]
+mod tests_claim;
 #[cfg(test)]
 mod tests_manifold;

@@ -48,9 +48,8 @@
 //! would then disagree on a face). Exact zeros at samples do not matter: they are settled to a
 //! sign before polygonization, and a crossing next to one is kept off the sample. Cutting the
 //! solid inside its grid or clipping it to bounds changes the field, not the mesher, and the
-//! thin-feature scan only counts. Dual contouring does not claim it: its own certificate
-//! (`dual_contouring/certify.rs`) is not backed by an exhaustive test here, so its runs are
-//! tested.
+//! thin-feature scan only counts. Dual contouring claims it under the premises of its own
+//! certificate (`dual_contouring/certify.rs`, `dual_contouring/claim.rs`).
 
 use super::table::CENTRE;
 use crate::grid::GridSpec;

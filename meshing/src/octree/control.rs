@@ -145,8 +145,8 @@ pub struct MeshStats {
     pub over_budget: bool,
     /// The mesh is free of self-intersections by construction ([`crate::marching_cubes::disjoint`]):
     /// every vertex strictly inside its rounded grid edge, every cell with a centre vertex tested
-    /// locally and passed, no orphan edge. `false` for meshers that do not certify (dual
-    /// contouring) and for the empty run of an over-budget grid.
+    /// locally and passed, no orphan edge; for dual contouring, the premises of its certificate
+    /// (`dual_contouring/claim.rs`). `false` for the empty run of an over-budget grid.
     pub intersection_free: bool,
 }
 

@@ -216,8 +216,8 @@ pub struct Meshed {
 
 impl Meshed {
     /// The topology report of the mesh. Self-intersections are known to be none by construction
-    /// when the mesher certified the run ([`MeshStats::intersection_free`]: marching cubes
-    /// whose conditions held), and tested otherwise.
+    /// when the mesher certified the run ([`MeshStats::intersection_free`]: marching cubes or
+    /// dual contouring whose conditions held), and tested otherwise.
     pub fn report(&self, options: &ReportOptions) -> TopologyReport {
         TopologyReport::with_certificate(&self.mesh, options, self.stats.intersection_free)
     }

@@ -50,7 +50,7 @@ fn dual_contouring_cases_run_and_pass_their_check() {
     assert!(r.check.volume_error().is_some_and(|e| e.abs() < 0.02));
     let line = serde_json::to_string(&r).expect("json");
     assert!(line.contains("\"method\":\"dc\""), "{line}");
-    assert_eq!(r.self_intersections_method.as_deref(), Some("tested"));
+    assert_eq!(r.self_intersections_method.as_deref(), Some("construction"));
 }
 
 #[test]
