@@ -452,7 +452,7 @@ fn node(
                 .read_file(path)
                 .map_err(|e| stmt.error(e.to_string()))?;
             match surface(stmt, path, &bytes)? {
-                Some((v, f)) => leaf(Geom::Solid(polyhedron(stmt, v, f)?)),
+                Some(s) => leaf(Geom::Solid(s)),
                 None => {
                     ctx.warn(stmt, format!("{path}: fewer than 2 × 2 heights: empty"));
                     leaf(Geom::Empty)

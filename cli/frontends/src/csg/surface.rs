@@ -3,7 +3,8 @@
 //! are skipped; a missing value in a short row is 0); row `i`, column `j` is the height at
 //! `(j, i)`. Each grid cell is four triangles around its centre at the mean of its corners; walls
 //! go down to a flat bottom at `min(0, min(height) − 1)`. `center` moves the grid's middle to the
-//! origin.
+//! origin. That solid is exactly a height field with [`Interpolation::Quads`] over the grid's
+//! rectangle down to the bottom: a primitive with an exact, cheap field (no mesh solid).
 //!
 //! A `.png` image (any colour type) is read as OpenSCAD reads it: pixel row `r` from the top is
 //! the height row `y = rows − 1 − r`, each pixel's grey level `L` (its luminance, 0..255; see
@@ -13,11 +14,13 @@
 
 use super::error::CsgError;
 use super::parser::Stmt;
-use glam::DVec3;
-use solidkit_kernel::primitive::heightfield::{HeightFieldError, decode_png_luminance};
-
-/// A polyhedron: vertices and faces counter-clockwise seen from outside.
-pub type Mesh = (Vec<DVec3>, Vec<Vec<u32>>);
+use glam::DVec2;
+use solidkit_kernel::Solid;
+use solidkit_kernel::primitive::Primitive;
+use solidkit_kernel::primitive::heightfield::{
+    HeightField, HeightFieldError, HeightGrid, HeightSource, Interpolation, decode_png_luminance,
+};
+use std::sync::Arc;
 
 /// The most heights a `.dat` file may hold (a 2048 × 2048 grid).
 pub const MAX_HEIGHTS: usize = 1 << 22;
@@ -49,58 +52,19 @@ pub fn parse_dat(text: &str) -> Result<Vec<Vec<f64>>, String> {
     Ok(rows)
 }
 
-/// OpenSCAD's surface mesh of `rows` (at least 2 × 2): vertices and triangles counter-clockwise
-/// seen from outside.
-pub fn mesh(rows: &[Vec<f64>], center: bool) -> Mesh {
+/// OpenSCAD's surface solid of `rows` (at least 2 × 2) as a height field: the rectangle from
+/// `(0, 0)` (or the grid's middle at the origin with `center`) with one unit per sample step,
+/// down to `min(0, min(height) − 1)`.
+pub fn height_field(rows: &[Vec<f64>], center: bool) -> Result<HeightField, HeightFieldError> {
     let (ny, nx) = (rows.len(), rows[0].len());
-    let (ox, oy) = if center {
-        (-(nx as f64 - 1.0) / 2.0, -(ny as f64 - 1.0) / 2.0)
-    } else {
-        (0.0, 0.0)
-    };
+    let size = DVec2::new(nx as f64 - 1.0, ny as f64 - 1.0);
+    let min = if center { -0.5 * size } else { DVec2::ZERO };
     let bottom = rows.iter().flatten().fold(0.0f64, |m, &v| m.min(v - 1.0));
-    let mut v: Vec<DVec3> = Vec::with_capacity(nx * ny * 2);
-    for (i, row) in rows.iter().enumerate() {
-        for (j, &h) in row.iter().enumerate() {
-            v.push(DVec3::new(ox + j as f64, oy + i as f64, h));
-        }
-    }
-    let top = |i: usize, j: usize| (i * nx + j) as u32;
-    let mut f: Vec<Vec<u32>> = Vec::with_capacity(4 * nx * ny + 4 * (nx + ny));
-    for i in 1..ny {
-        for j in 1..nx {
-            let (a, b, d, e) = (top(i - 1, j - 1), top(i - 1, j), top(i, j), top(i, j - 1));
-            let mean = (rows[i - 1][j - 1] + rows[i - 1][j] + rows[i][j - 1] + rows[i][j]) / 4.0;
-            let c = v.len() as u32;
-            v.push(DVec3::new(ox + j as f64 - 0.5, oy + i as f64 - 0.5, mean));
-            f.extend([vec![c, a, b], vec![c, b, d], vec![c, d, e], vec![c, e, a]]);
-        }
-    }
-    // The border, counter-clockwise seen from above.
-    let mut border: Vec<(usize, usize)> = (0..nx).map(|j| (0, j)).collect();
-    border.extend((1..ny).map(|i| (i, nx - 1)));
-    border.extend((0..nx - 1).rev().map(|j| (ny - 1, j)));
-    border.extend((1..ny - 1).rev().map(|i| (i, 0)));
-    let base = v.len() as u32;
-    v.extend(
-        border
-            .iter()
-            .map(|&(i, j)| DVec3::new(ox + j as f64, oy + i as f64, bottom)),
-    );
-    let middle = v.len() as u32;
-    v.push(DVec3::new(
-        ox + (nx as f64 - 1.0) / 2.0,
-        oy + (ny as f64 - 1.0) / 2.0,
-        bottom,
-    ));
-    let n = border.len();
-    for k in 0..n {
-        let (p, q) = (border[k], border[(k + 1) % n]);
-        let (tp, tq) = (top(p.0, p.1), top(q.0, q.1));
-        let (bp, bq) = (base + k as u32, base + ((k + 1) % n) as u32);
-        f.extend([vec![bp, bq, tq], vec![bp, tq, tp], vec![middle, bq, bp]]);
-    }
-    (v, f)
+    let source = HeightSource::Samples {
+        grid: HeightGrid::from_rows(rows)?,
+        interpolation: Interpolation::Quads,
+    };
+    HeightField::new(min, min + size, bottom, source)
 }
 
 /// The heights of a PNG image, row by row from the smallest y, as OpenSCAD derives them; `None`
@@ -129,8 +93,8 @@ pub fn png_heights(bytes: &[u8], invert: bool) -> Result<Option<Vec<Vec<f64>>>, 
     ))
 }
 
-/// The mesh of a `surface` statement from the bytes of its `.dat` or `.png` file.
-pub fn surface(stmt: &Stmt, path: &str, bytes: &[u8]) -> Result<Option<Mesh>, CsgError> {
+/// The solid of a `surface` statement from the bytes of its `.dat` or `.png` file.
+pub fn surface(stmt: &Stmt, path: &str, bytes: &[u8]) -> Result<Option<Solid>, CsgError> {
     let rows = if path.to_ascii_lowercase().ends_with(".png") {
         let invert = stmt.flag("invert", None, false)?;
         match png_heights(bytes, invert).map_err(|e| stmt.error(format!("{path}: {e}")))? {
@@ -145,12 +109,75 @@ pub fn surface(stmt: &Stmt, path: &str, bytes: &[u8]) -> Result<Option<Mesh>, Cs
         return Ok(None);
     }
     let center = stmt.flag("center", None, false)?;
-    Ok(Some(mesh(&rows, center)))
+    let field = height_field(&rows, center).map_err(|e| stmt.error(format!("{path}: {e}")))?;
+    Ok(Some(Solid::primitive(Primitive::HeightField(Arc::new(
+        field,
+    )))))
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
+    use glam::DVec3;
+    use solidkit_kernel::Shape;
+
+    /// A polyhedron: vertices and faces counter-clockwise seen from outside.
+    type Mesh = (Vec<DVec3>, Vec<Vec<u32>>);
+
+    /// OpenSCAD's surface mesh of `rows` (at least 2 × 2): vertices and triangles counter-clockwise
+    /// seen from outside.
+    pub(super) fn mesh(rows: &[Vec<f64>], center: bool) -> Mesh {
+        let (ny, nx) = (rows.len(), rows[0].len());
+        let (ox, oy) = if center {
+            (-(nx as f64 - 1.0) / 2.0, -(ny as f64 - 1.0) / 2.0)
+        } else {
+            (0.0, 0.0)
+        };
+        let bottom = rows.iter().flatten().fold(0.0f64, |m, &v| m.min(v - 1.0));
+        let mut v: Vec<DVec3> = Vec::with_capacity(nx * ny * 2);
+        for (i, row) in rows.iter().enumerate() {
+            for (j, &h) in row.iter().enumerate() {
+                v.push(DVec3::new(ox + j as f64, oy + i as f64, h));
+            }
+        }
+        let top = |i: usize, j: usize| (i * nx + j) as u32;
+        let mut f: Vec<Vec<u32>> = Vec::with_capacity(4 * nx * ny + 4 * (nx + ny));
+        for i in 1..ny {
+            for j in 1..nx {
+                let (a, b, d, e) = (top(i - 1, j - 1), top(i - 1, j), top(i, j), top(i, j - 1));
+                let mean =
+                    (rows[i - 1][j - 1] + rows[i - 1][j] + rows[i][j - 1] + rows[i][j]) / 4.0;
+                let c = v.len() as u32;
+                v.push(DVec3::new(ox + j as f64 - 0.5, oy + i as f64 - 0.5, mean));
+                f.extend([vec![c, a, b], vec![c, b, d], vec![c, d, e], vec![c, e, a]]);
+            }
+        }
+        // The border, counter-clockwise seen from above.
+        let mut border: Vec<(usize, usize)> = (0..nx).map(|j| (0, j)).collect();
+        border.extend((1..ny).map(|i| (i, nx - 1)));
+        border.extend((0..nx - 1).rev().map(|j| (ny - 1, j)));
+        border.extend((1..ny - 1).rev().map(|i| (i, 0)));
+        let base = v.len() as u32;
+        v.extend(
+            border
+                .iter()
+                .map(|&(i, j)| DVec3::new(ox + j as f64, oy + i as f64, bottom)),
+        );
+        let middle = v.len() as u32;
+        v.push(DVec3::new(
+            ox + (nx as f64 - 1.0) / 2.0,
+            oy + (ny as f64 - 1.0) / 2.0,
+            bottom,
+        ));
+        let n = border.len();
+        for k in 0..n {
+            let (p, q) = (border[k], border[(k + 1) % n]);
+            let (tp, tq) = (top(p.0, p.1), top(q.0, q.1));
+            let (bp, bq) = (base + k as u32, base + ((k + 1) % n) as u32);
+            f.extend([vec![bp, bq, tq], vec![bp, tq, tp], vec![middle, bq, bp]]);
+        }
+        (v, f)
+    }
 
     /// Volume of a closed triangle mesh.
     fn volume(v: &[DVec3], f: &[Vec<u32>]) -> f64 {
@@ -190,5 +217,34 @@ mod tests {
         );
         assert_eq!(parse_dat("1 2 3\n4\n").unwrap()[1], vec![4.0, 0.0, 0.0]);
         assert!(parse_dat("1 x\n").is_err());
+    }
+
+    #[test]
+    fn the_height_field_is_openscads_mesh() {
+        // Uneven heights (one below zero), 4 × 3 samples; both placements.
+        let rows = parse_dat("0 2 -1.5 3\n4 0.5 1 7\n-2 6 2.25 0\n").unwrap();
+        for center in [false, true] {
+            let (v, f) = mesh(&rows, center);
+            let field = height_field(&rows, center).unwrap();
+            // The bottom and the rectangle are the mesh's box.
+            let lo = v.iter().fold(DVec3::INFINITY, |m, p| m.min(*p));
+            let hi = v.iter().fold(DVec3::NEG_INFINITY, |m, p| m.max(*p));
+            assert_eq!(field.base(), lo.z);
+            assert_eq!(field.min(), lo.truncate());
+            assert_eq!(field.max(), hi.truncate());
+            // Every top triangle (the first 4 per cell) is the height field at points inside it.
+            let top = 4 * (rows.len() - 1) * (rows[0].len() - 1);
+            for t in &f[..top] {
+                let [a, b, c] = [0, 1, 2].map(|k| v[t[k] as usize]);
+                for (wa, wb) in [(1.0 / 3.0, 1.0 / 3.0), (0.7, 0.2), (0.1, 0.1), (0.45, 0.5)] {
+                    let p = a * wa + b * wb + c * (1.0 - wa - wb);
+                    let h = field.height(p.x, p.y);
+                    assert!((h - p.z).abs() < 1e-12, "{p} {h} center {center}");
+                    // Just below the top is inside, just above outside.
+                    assert!(field.value(p - DVec3::Z * 1e-6) < 0.0);
+                    assert!(field.value(p + DVec3::Z * 1e-6) > 0.0);
+                }
+            }
+        }
     }
 }

@@ -2,7 +2,7 @@
 //! `min` = [x, y] to `max` = [x, y], with `h` from exactly one of
 //! - `"bezier"`: rows of control heights (row j along y, column i along x; degrees = size − 1);
 //! - `"samples"`: rows of heights on a regular grid, with `"interpolation"`: `"bilinear"`
-//!   (default) or `"bicubic"`;
+//!   (default), `"bicubic"` or `"quads"` (OpenSCAD's `surface()` triangles);
 //! - `"png"`: a grayscale PNG file path, read through the reader's
 //!   [`MeshResolver`](crate::primitive::MeshResolver) (relative to the tree file's folder and
 //!   confined to it, like `mesh` paths), with `"heights"`: [black, white] and the optional
@@ -120,7 +120,11 @@ impl Params<'_, '_> {
         };
         match &self.reader.doc.values[*i as usize] {
             Value::String(s) => Interpolation::from_name(s).ok_or_else(|| {
-                self.fail(*i, "interpolation", "expected \"bilinear\" or \"bicubic\"")
+                self.fail(
+                    *i,
+                    "interpolation",
+                    "expected \"bilinear\", \"bicubic\" or \"quads\"",
+                )
             }),
             v => Err(self.fail(
                 *i,

@@ -1,5 +1,5 @@
 //! Height from samples on a regular grid over `[0, 1]²`: bilinear interpolation (C⁰, exact range
-//! and slopes from the samples) or bicubic Catmull–Rom interpolation (C¹, interpolating, with
+//! and slopes from the samples), OpenSCAD's four triangles per cell (C⁰, the same bounds) or bicubic Catmull–Rom interpolation (C¹, interpolating, with
 //! clamped samples past the border). Bicubic bounds convert each cell to its bicubic Bézier form
 //! (per axis: `b₀ = p₁`, `b₁ = p₁ + (p₂ − p₀)/6`, `b₂ = p₂ − (p₃ − p₁)/6`, `b₃ = p₂`) and use the
 //! convex-hull property of its (differenced) control net.
@@ -35,6 +35,50 @@ pub(super) fn bilinear(g: &HeightGrid, u: f64, v: f64) -> ParamDerivatives {
         hv: kv * (top - bottom),
         huu: 0.0,
         huv: ku * kv * (z11 - z10 - z01 + z00),
+        hvv: 0.0,
+    }
+}
+
+/// `h` and its derivatives in `(u, v)` over OpenSCAD's `surface()` triangles: the cell's centre
+/// at the mean `c` of its four corners, and the cell split by its diagonals into four flat
+/// triangles, each through two corners and the centre. Across a triangle's inner edges the slope
+/// jumps; the height is continuous. Each slope is a sample step or the mean of two opposite ones,
+/// so [`bilinear_bounds`] bound it too.
+#[inline]
+pub(super) fn quads(g: &HeightGrid, u: f64, v: f64) -> ParamDerivatives {
+    let (i, t) = cell(u, g.nx());
+    let (j, s) = cell(v, g.ny());
+    let (z00, z10, z01, z11) = (
+        g.get(i, j),
+        g.get(i + 1, j),
+        g.get(i, j + 1),
+        g.get(i + 1, j + 1),
+    );
+    let c2 = 0.5 * (z00 + z10 + z01 + z11);
+    let (dx, dy) = (t - 0.5, s - 0.5);
+    // (h, ∂h/∂t, ∂h/∂s) on the triangle containing (t, s).
+    let (h, ht, hs) = if dy.abs() >= dx.abs() {
+        if dy <= 0.0 {
+            let m = c2 - z00 - z10;
+            (z00 + t * (z10 - z00) + s * m, z10 - z00, m)
+        } else {
+            let m = c2 - z01 - z11;
+            (z01 + t * (z11 - z01) + (1.0 - s) * m, z11 - z01, -m)
+        }
+    } else if dx <= 0.0 {
+        let m = c2 - z00 - z01;
+        (z00 + s * (z01 - z00) + t * m, m, z01 - z00)
+    } else {
+        let m = c2 - z10 - z11;
+        (z10 + s * (z11 - z10) + (1.0 - t) * m, -m, z11 - z10)
+    };
+    let (ku, kv) = ((g.nx() - 1) as f64, (g.ny() - 1) as f64);
+    ParamDerivatives {
+        h,
+        hu: ku * ht,
+        hv: kv * hs,
+        huu: 0.0,
+        huv: 0.0,
         hvv: 0.0,
     }
 }

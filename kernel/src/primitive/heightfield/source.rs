@@ -14,6 +14,9 @@ pub enum Interpolation {
     Bilinear,
     /// Bicubic Catmull–Rom: interpolating with continuous slopes.
     Bicubic,
+    /// OpenSCAD's `surface()`: each cell is four flat triangles around its centre, which lies at
+    /// the mean of the cell's corners (piecewise linear, continuous).
+    Quads,
 }
 
 impl Interpolation {
@@ -22,6 +25,7 @@ impl Interpolation {
         match self {
             Self::Bilinear => "bilinear",
             Self::Bicubic => "bicubic",
+            Self::Quads => "quads",
         }
     }
 
@@ -30,6 +34,7 @@ impl Interpolation {
         match name {
             "bilinear" => Some(Self::Bilinear),
             "bicubic" => Some(Self::Bicubic),
+            "quads" => Some(Self::Quads),
             _ => None,
         }
     }
@@ -70,6 +75,10 @@ impl HeightSource {
                 grid,
                 interpolation: Interpolation::Bicubic,
             } => sampled::bicubic(grid, u, v).h,
+            Self::Samples {
+                grid,
+                interpolation: Interpolation::Quads,
+            } => sampled::quads(grid, u, v).h,
         }
     }
 
@@ -86,6 +95,10 @@ impl HeightSource {
                 grid,
                 interpolation: Interpolation::Bicubic,
             } => sampled::bicubic(grid, u, v),
+            Self::Samples {
+                grid,
+                interpolation: Interpolation::Quads,
+            } => sampled::quads(grid, u, v),
         }
     }
 
@@ -95,7 +108,7 @@ impl HeightSource {
             Self::Bezier(g) => bezier::bounds(g),
             Self::Samples {
                 grid,
-                interpolation: Interpolation::Bilinear,
+                interpolation: Interpolation::Bilinear | Interpolation::Quads,
             } => sampled::bilinear_bounds(grid),
             Self::Samples {
                 grid,

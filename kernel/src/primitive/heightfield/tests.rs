@@ -61,6 +61,7 @@ fn every_source_conforms() {
     check_shape(&bezier_bump(), 1.6);
     check_shape(&sampled(Interpolation::Bilinear), 1.6);
     check_shape(&sampled(Interpolation::Bicubic), 1.6);
+    check_shape(&sampled(Interpolation::Quads), 1.6);
     check_shape(&paraboloid(1.0, 0.8), 1.6);
 }
 
