@@ -114,10 +114,11 @@ pub struct RepairArgs {
 #[derive(Debug, clap::Args)]
 pub struct CurvatureArgs {
     /// A mesh file (.stl .obj .ply .off .3mf .glb: discrete curvatures) or a tree (.json .rhai)
-    /// whose root is a parametric surface node (exact curvatures at its tessellation's vertices).
+    /// whose root is a parametric surface or height field node (exact curvatures at its
+    /// tessellation's vertices; the Laplacian Δh too where the sheet is a graph z = h(x, y)).
     pub input: PathBuf,
-    /// Write the mesh here as binary PLY with the vertex properties gaussian, mean, k1, k2 and
-    /// boundary (replaced atomically).
+    /// Write the mesh here as binary PLY with the vertex properties gaussian, mean, k1, k2,
+    /// boundary and, for a graph z = h(x, y), laplacian (replaced atomically).
     #[arg(short, long)]
     pub output: PathBuf,
     /// Folders besides the input's own that files named in a tree may come from.
