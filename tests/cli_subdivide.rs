@@ -72,6 +72,110 @@ fn quads_in_quads_out_and_the_report() {
 }
 
 #[test]
+fn adaptive_subdivision_refines_only_the_curved_band() {
+    // The 6 × 6 × 2 slab of unit quads: Catmull-Clark to 0.01 refines the 88 quads touching its
+    // edges at every level and keeps the 4 × 4 middles of the top and bottom (24 of them gain
+    // the edge points of split edges as extra corners).
+    let dir = tempfile::tempdir().unwrap();
+    let slab = fixture("polyhedra/gridded_slab.obj");
+    let out = dir.path().join("slab.obj");
+    let adaptive = |scheme: &str, levels: &str, tolerance: &str| {
+        solidkit(&[
+            "subdivide",
+            path_str(&slab),
+            "-o",
+            path_str(&out),
+            "--scheme",
+            scheme,
+            "--levels",
+            levels,
+            "--adaptive",
+            tolerance,
+            "--json",
+        ])
+    };
+    let r = success_json(&adaptive("catmull-clark", "2", "0.01"));
+    assert_eq!(r["adaptive"], 0.01);
+    let levels = r["adaptive_levels"].as_array().unwrap();
+    assert_eq!(levels.len(), 2);
+    for l in levels {
+        assert_eq!(
+            (l["conformed"].as_u64(), l["kept"].as_u64()),
+            (Some(24), Some(8)),
+            "{l}"
+        );
+    }
+    assert_eq!(levels[0]["refined"], 88);
+    assert_eq!(r["polygon_faces"], 88 * 16 + 32);
+    // A corner of the ring: a unit quad with two sides along the refined band, each cut into
+    // 2^k pieces after k levels: 4 + 2 (2^k − 1) = 10 corners after two.
+    assert_eq!(r["largest_face"], 10);
+    assert_eq!(
+        (r["closed"].clone(), r["genus"].clone()),
+        (true.into(), 0.into())
+    );
+    assert_eq!(r["euler_characteristic"], 2);
+    let back = read_polygon_mesh(&out).unwrap();
+    assert_eq!(back.faces.len(), 88 * 16 + 32);
+    // Loop on its triangles (STL): red-green closure, still closed and manifold, fewer
+    // triangles than uniform (240 · 16 = 3840).
+    let stl = dir.path().join("slab.stl");
+    let o = solidkit(&[
+        "subdivide",
+        path_str(&slab),
+        "-o",
+        path_str(&stl),
+        "--scheme",
+        "catmull-clark",
+        "--levels",
+        "0",
+    ]);
+    assert_eq!(
+        o.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&o.stderr)
+    );
+    let o = solidkit(&[
+        "subdivide",
+        path_str(&stl),
+        "-o",
+        path_str(&out),
+        "--scheme",
+        "loop",
+        "--levels",
+        "2",
+        "--adaptive",
+        "0.01",
+        "--json",
+    ]);
+    let r = success_json(&o);
+    assert_eq!(
+        (r["closed"].clone(), r["manifold"].clone()),
+        (true.into(), true.into())
+    );
+    assert_eq!(r["euler_characteristic"], 2);
+    let l = &r["adaptive_levels"][0];
+    assert!(
+        l["conformed"].as_u64().unwrap() > 0 && l["kept"].as_u64().unwrap() > 0,
+        "{l}"
+    );
+    let faces = r["polygon_faces"].as_u64().unwrap();
+    assert!(faces < 240 * 16 && faces == read_mesh(&out).unwrap().triangles.len() as u64);
+    // Refused: a scheme without an adaptive rule, a tolerance that is not positive.
+    for (o, expected) in [
+        (
+            adaptive("butterfly", "1", "0.01"),
+            "adaptive subdivision supports",
+        ),
+        (adaptive("catmull-clark", "1", "0"), "not a positive number"),
+    ] {
+        assert_eq!(o.status.code(), Some(2));
+        assert!(String::from_utf8_lossy(&o.stderr).contains(expected));
+    }
+}
+
+#[test]
 fn bad_requests_fail_with_one_line_and_write_nothing() {
     let dir = tempfile::tempdir().unwrap();
     let ring = fixture("polyhedra/quad_ring.obj");

@@ -1,13 +1,13 @@
 //! Subdivision surfaces in CSG (issue 8): `subdivide` nodes read from JSON, computed through the
 //! meshing crate's resolver, meshed by marching cubes inside Boolean trees, against the volumes of
-//! the subdivided polyhedra themselves; and a polygon mesh file as the child.
+//! the subdivided polyhedra themselves; a polygon mesh file as the child; adaptive subdivision.
 
 use glam::DVec3;
 use solidkit_kernel::json::{self, MeshResolver};
 use solidkit_kernel::polyhedra::{PlatonicKind, PlatonicSize, Polyhedron};
 use solidkit_kernel::primitive::{SubdivisionInput, SubdivisionRequest, SubdivisionScheme};
 use solidkit_meshing::TopologyReport;
-use solidkit_meshing::io::{FileMeshResolver, read_polygon_mesh};
+use solidkit_meshing::io::{FileMeshResolver, PolygonMesh, read_polygon_mesh};
 use solidkit_meshing::subdivision::{self, Limits};
 use solidkit_tests::{fixture, mesh, rel_err};
 use std::f64::consts::PI;
@@ -25,6 +25,7 @@ fn subdivided_cube_volume() -> f64 {
         },
         scheme: SubdivisionScheme::CatmullClark,
         levels: 3,
+        adaptive: None,
     };
     let triangles = FileMeshResolver::new(".").subdivide(&request).unwrap();
     let r = TopologyReport::of(&triangles);
@@ -122,5 +123,67 @@ fn a_quad_mesh_file_child_keeps_its_quads_and_genus() {
         &FileMeshResolver::for_tree_file(&path),
     )
     .unwrap();
+    assert!(again == solid);
+}
+
+#[test]
+fn adaptive_catmull_clark_keeps_the_flat_middles_of_the_slab_coarse() {
+    // fixtures/polyhedra/adaptive_slab.json: three adaptive levels to 0.01 on a 6 × 6 × 2 slab
+    // of unit quads. The quads touching an edge of the slab are refined (the limit surface is
+    // curved there) until they are flat to the tolerance; the 4 × 4 middles of the top and
+    // bottom stay as they were.
+    let path = fixture("polyhedra/adaptive_slab.json");
+    let text = std::fs::read_to_string(&path).unwrap();
+    let resolver = FileMeshResolver::for_tree_file(&path);
+    let solid = json::from_str_with(&text, &resolver).unwrap();
+    let quads = read_polygon_mesh(&fixture("polyhedra/gridded_slab.obj")).unwrap();
+    let he = quads.to_half_edge().unwrap();
+    assert_eq!(he.face_count(), 120);
+    let (adaptive, levels) = subdivision::subdivide_adaptive(
+        &he,
+        SubdivisionScheme::CatmullClark,
+        3,
+        0.01,
+        &Limits::default(),
+    )
+    .unwrap();
+    // Levels 1 and 2 refine the whole band (88 quads, then their 352 children); at level 3 most
+    // of the band's quads are flat to 0.01 at their size, and only 496 of 1440 are refined.
+    for l in &levels[..2] {
+        assert_eq!(
+            (l.refined, l.conformed, l.kept),
+            (l.faces_in - 32, 24, 8),
+            "{levels:?}"
+        );
+    }
+    assert_eq!(levels[2].refined, 496, "{levels:?}");
+    assert_eq!(adaptive.face_count(), 2928);
+    assert_eq!(adaptive.euler_characteristic(), 2);
+    let uniform = subdivision::catmull_clark(&he, 3).unwrap();
+    assert_eq!(uniform.face_count(), 120 * 64);
+    // The node is that surface: meshed closed, one shell of genus 0, with its volume; and it
+    // lies within the tolerance scale of the uniform limit (same volume to 0.5 %).
+    let exact = TopologyReport::of(&PolygonMesh::from_half_edge(&adaptive).triangulated());
+    let fine = TopologyReport::of(&PolygonMesh::from_half_edge(&uniform).triangulated());
+    assert!(
+        exact.is_closed_manifold() && exact.genus == Some(0),
+        "{exact:?}"
+    );
+    assert!(
+        rel_err(exact.volume, fine.volume) < 5e-3,
+        "{} vs {}",
+        exact.volume,
+        fine.volume
+    );
+    let (_, report) = mesh(&solid, 96);
+    assert!(report.is_closed_manifold(), "{report:?}");
+    assert_eq!((report.shells, report.genus), (1, Some(0)), "{report:?}");
+    assert!(
+        rel_err(report.volume, exact.volume) < 0.01,
+        "{} vs {}",
+        report.volume,
+        exact.volume
+    );
+    let again = json::from_str_with(&json::to_string(&solid), &resolver).unwrap();
     assert!(again == solid);
 }

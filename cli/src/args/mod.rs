@@ -141,9 +141,14 @@ pub struct SubdivideArgs {
     /// The subdivision scheme.
     #[arg(long, value_enum)]
     pub scheme: SchemeArg,
-    /// How many times to apply it (0 to 30).
+    /// How many times to apply it (0 to 30; with --adaptive at most this many).
     #[arg(long, default_value_t = 1, value_parser = clap::value_parser!(u32).range(0..=30))]
     pub levels: u32,
+    /// Adaptive (loop, catmull-clark): refine only faces that the next level would move off
+    /// their plane by more than this distance (model units); red-green closure for Loop,
+    /// conforming polygons for Catmull-Clark, so the result stays crack-free and manifold.
+    #[arg(long, value_parser = parse_tolerance, allow_hyphen_values = true)]
+    pub adaptive: Option<f64>,
     /// Refuse (before any work) a request whose last level would have more faces than this
     /// (also refused: more faces than half of this machine's memory holds, about 1 KiB each).
     #[arg(long, default_value_t = solidkit_meshing::subdivision::Limits::DEFAULT_MAX_FACES,

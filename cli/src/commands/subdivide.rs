@@ -7,7 +7,7 @@ use anyhow::{Result, anyhow};
 use serde_json::json;
 use solidkit_meshing::TopologyReport;
 use solidkit_meshing::io::{PolygonMesh, read_polygon_mesh, write_polygon_mesh};
-use solidkit_meshing::subdivision::{Limits, Scheme, subdivide};
+use solidkit_meshing::subdivision::{AdaptiveLevel, Limits, Scheme, subdivide, subdivide_adaptive};
 use std::time::Instant;
 
 /// Subdivides, writes the result and prints its report (of the triangulated faces); exit code 0.
@@ -28,7 +28,11 @@ pub fn run(a: &SubdivideArgs) -> Result<u8> {
         max_faces: a.max_faces.min(budget_faces),
     };
     let start = Instant::now();
-    let result = subdivide(&mesh, scheme, a.levels, &limits).map_err(|e| {
+    let run = match a.adaptive {
+        None => subdivide(&mesh, scheme, a.levels, &limits).map(|m| (m, Vec::new())),
+        Some(t) => subdivide_adaptive(&mesh, scheme, a.levels, t, &limits),
+    };
+    let (result, adaptive_levels) = run.map_err(|e| {
         if budget_faces < a.max_faces {
             anyhow!(
                 "{name}: {e} (the memory budget: about {} KiB per face, half of this machine's {} MiB)",
@@ -52,11 +56,34 @@ pub fn run(a: &SubdivideArgs) -> Result<u8> {
             ("polygon_edges", json!(result.edge_count())),
             ("polygon_faces", json!(result.face_count())),
             ("largest_face", json!(largest)),
+            ("adaptive", json!(a.adaptive)),
+            ("adaptive_levels", adaptive_json(&adaptive_levels)),
             ("time_s", json!(time_s)),
         ];
         outln!("{}", report::to_json(&r, &extra)?)?;
     } else {
-        outln!("scheme: {scheme}, {} level(s)", a.levels)?;
+        match a.adaptive {
+            None => outln!("scheme: {scheme}, {} level(s)", a.levels)?,
+            Some(t) => {
+                outln!(
+                    "scheme: {scheme}, adaptive to {t}, {} of at most {} level(s)",
+                    adaptive_levels.len(),
+                    a.levels
+                )?;
+                for (k, l) in adaptive_levels.iter().enumerate() {
+                    outln!(
+                        "level {}: {} faces -> {}: {} refined, {} refined by closure, {} conformed, {} kept",
+                        k + 1,
+                        l.faces_in,
+                        l.faces_out,
+                        l.refined,
+                        l.closure_refined,
+                        l.conformed,
+                        l.kept
+                    )?;
+                }
+            }
+        }
         outln!(
             "polygon mesh: {} vertices, {} edges, {} faces (largest {largest} corners)",
             result.vertex_count(),
@@ -69,6 +96,23 @@ pub fn run(a: &SubdivideArgs) -> Result<u8> {
         outln!("wrote: {}", a.output.display())?;
     }
     Ok(0)
+}
+
+/// The adaptive levels' records as JSON (an empty list for uniform subdivision).
+fn adaptive_json(levels: &[AdaptiveLevel]) -> serde_json::Value {
+    levels
+        .iter()
+        .map(|l| {
+            json!({
+                "faces_in": l.faces_in,
+                "refined": l.refined,
+                "closure_refined": l.closure_refined,
+                "conformed": l.conformed,
+                "kept": l.kept,
+                "faces_out": l.faces_out,
+            })
+        })
+        .collect()
 }
 
 /// Peak memory per output face of `subdivide` (measured: about 925 bytes), rounded up.

@@ -21,7 +21,7 @@ use solidkit_kernel::primitive::{ResolveError, ResolveKind, SubdivisionInput, Su
 
 use super::{MeshFormat, MeshIoError, PolygonMesh};
 use crate::HalfEdgeMesh;
-use crate::subdivision::{Limits, subdivide};
+use crate::subdivision::{Limits, subdivide, subdivide_adaptive};
 
 /// Reads the files of `mesh` and `heightfield` nodes as its [`FileAccess`] allows.
 #[derive(Debug, Clone, PartialEq, Eq)]
@@ -95,8 +95,14 @@ impl MeshResolver for FileMeshResolver {
                 format!("cannot subdivide the child: {e}"),
             )
         })?;
-        let result = subdivide(&mesh, request.scheme, request.levels, &Limits::default())
-            .map_err(|e| ResolveError::new(ResolveKind::Subdivision, e))?;
+        let result = match request.adaptive {
+            None => subdivide(&mesh, request.scheme, request.levels, &Limits::default()),
+            Some(t) => {
+                subdivide_adaptive(&mesh, request.scheme, request.levels, t, &Limits::default())
+                    .map(|(m, _)| m)
+            }
+        }
+        .map_err(|e| ResolveError::new(ResolveKind::Subdivision, e))?;
         Ok(PolygonMesh::from_half_edge(&result).triangulated())
     }
 }

@@ -17,11 +17,44 @@ use glam::DVec3;
 
 use super::SubdivisionError;
 use super::edges::{EdgeIndex, boundary_neighbors};
-use crate::halfedge::HalfEdgeMesh;
+use crate::halfedge::{FaceId, HalfEdgeMesh};
 
 /// One level of Catmull-Clark subdivision (see the module docs).
 pub(super) fn step(mesh: &HalfEdgeMesh) -> Result<HalfEdgeMesh, SubdivisionError> {
     let edges = EdgeIndex::new(mesh);
+    let positions = points(mesh, &edges);
+    let edge_base = mesh.vertex_count() as u32;
+    let face_base = edge_base + edges.count() as u32;
+    let mut quads: Vec<[u32; 4]> = Vec::new();
+    for f in mesh.face_ids() {
+        quads.extend(face_quads(mesh, &edges, f, edge_base, face_base));
+    }
+    Ok(HalfEdgeMesh::from_faces(positions, &quads)?)
+}
+
+/// The quads face `f` becomes (vertex, edge, face, edge point), with edge points numbered from
+/// `edge_base` and face points from `face_base`.
+pub(super) fn face_quads<'a>(
+    mesh: &'a HalfEdgeMesh,
+    edges: &'a EdgeIndex,
+    f: FaceId,
+    edge_base: u32,
+    face_base: u32,
+) -> impl Iterator<Item = [u32; 4]> + 'a {
+    mesh.face_half_edges(f).map(move |h| {
+        let he = mesh.half_edge(h);
+        [
+            he.origin.0,
+            edge_base + edges.of(h),
+            face_base + f.0,
+            edge_base + edges.of(he.prev),
+        ]
+    })
+}
+
+/// The next level's points: the vertex points (old vertex ids), then one edge point per edge of
+/// `edges`, then one face point per face.
+pub(super) fn points(mesh: &HalfEdgeMesh, edges: &EdgeIndex) -> Vec<DVec3> {
     let p = mesh.positions();
     let face_points: Vec<DVec3> = mesh
         .face_ids()
@@ -63,19 +96,5 @@ pub(super) fn step(mesh: &HalfEdgeMesh) -> Result<HalfEdgeMesh, SubdivisionError
         });
     }
     positions.extend_from_slice(&face_points);
-    let edge_base = mesh.vertex_count() as u32;
-    let face_base = edge_base + edges.count() as u32;
-    let mut quads: Vec<[u32; 4]> = Vec::new();
-    for f in mesh.face_ids() {
-        for h in mesh.face_half_edges(f) {
-            let he = mesh.half_edge(h);
-            quads.push([
-                he.origin.0,
-                edge_base + edges.of(h),
-                face_base + f.0,
-                edge_base + edges.of(he.prev),
-            ]);
-        }
-    }
-    Ok(HalfEdgeMesh::from_faces(positions, &quads)?)
+    positions
 }

@@ -36,6 +36,15 @@ pub enum SubdivisionError {
         /// The limit.
         limit: u64,
     },
+    /// Adaptive subdivision runs Loop and Catmull-Clark only.
+    #[error("adaptive subdivision supports loop and catmull-clark, not {scheme}")]
+    NotAdaptive {
+        /// The scheme asked for.
+        scheme: Scheme,
+    },
+    /// The adaptive tolerance is not a positive finite number (as written).
+    #[error("the adaptive tolerance must be a positive finite number, got {0}")]
+    Tolerance(String),
     /// A level's faces did not form a half-edge mesh (a bug, reported instead of a panic).
     #[error("subdivision made faces that do not form a manifold mesh: {0}")]
     Rebuild(#[from] HalfEdgeError),

@@ -29,6 +29,14 @@ pub(super) fn beta(n: usize) -> f64 {
 /// One level of Loop subdivision of a triangle mesh (see the module docs).
 pub(super) fn step(mesh: &HalfEdgeMesh) -> Result<HalfEdgeMesh, SubdivisionError> {
     let edges = EdgeIndex::new(mesh);
+    let positions = points(mesh, &edges);
+    let triangles = split_triangles(mesh, &edges);
+    Ok(HalfEdgeMesh::from_faces(positions, &triangles)?)
+}
+
+/// The next level's points: the vertex points (old vertex ids), then one edge point per edge of
+/// `edges`.
+pub(super) fn points(mesh: &HalfEdgeMesh, edges: &EdgeIndex) -> Vec<DVec3> {
     let p = mesh.positions();
     let mut positions = Vec::with_capacity(mesh.vertex_count() + edges.count());
     for v in mesh.vertex_ids() {
@@ -63,6 +71,5 @@ pub(super) fn step(mesh: &HalfEdgeMesh) -> Result<HalfEdgeMesh, SubdivisionError
             _ => 0.5 * ends,
         });
     }
-    let triangles = split_triangles(mesh, &edges);
-    Ok(HalfEdgeMesh::from_faces(positions, &triangles)?)
+    positions
 }

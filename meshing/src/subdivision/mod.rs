@@ -16,12 +16,17 @@
 //! Catmull-Clark, one per face. Open meshes use boundary rules (documented per scheme); isolated
 //! vertices stay where they are in the primal schemes and are dropped by Doo-Sabin.
 //!
+//! [`subdivide_adaptive`] ([rules](adaptive)) refines only the faces that are not yet flat to a
+//! tolerance (Loop with red-green closure, Catmull-Clark with conforming polygons), crack-free and
+//! manifold.
+//!
 //! Before any work the face counts of all requested levels are predicted (exactly for the primal
 //! schemes, an upper bound for Doo-Sabin); a request above [`Limits::max_faces`] fails with
 //! [`SubdivisionError::TooLarge`] instead of exhausting memory.
 
 // The scheme modules are public for their documentation (the rules of each scheme); their
 // entry points are the functions below.
+pub mod adaptive;
 pub mod butterfly;
 pub mod catmull_clark;
 pub mod doo_sabin;
@@ -31,8 +36,11 @@ pub mod loop_scheme;
 mod split;
 
 #[cfg(test)]
+mod adaptive_tests;
+#[cfg(test)]
 mod tests;
 
+pub use adaptive::{AdaptiveLevel, subdivide_adaptive};
 pub use error::SubdivisionError;
 pub use solidkit_kernel::primitive::SubdivisionScheme as Scheme;
 

@@ -9,17 +9,17 @@ use crate::HalfEdgeMesh;
 use crate::topology::test_meshes::{cube_positions, cube_quads, octahedron, torus, torus_quads};
 
 /// Builds and validates a polygon mesh.
-fn mesh(positions: Vec<DVec3>, faces: &[Vec<u32>]) -> HalfEdgeMesh {
+pub(super) fn mesh(positions: Vec<DVec3>, faces: &[Vec<u32>]) -> HalfEdgeMesh {
     let m = HalfEdgeMesh::from_polygons(positions, faces).expect("valid test mesh");
     assert_eq!(m.validate(), Ok(()));
     m
 }
 
-fn cube() -> HalfEdgeMesh {
+pub(super) fn cube() -> HalfEdgeMesh {
     mesh(cube_positions(), &cube_quads())
 }
 
-fn platonic(kind: PlatonicKind) -> HalfEdgeMesh {
+pub(super) fn platonic(kind: PlatonicKind) -> HalfEdgeMesh {
     let p = Polyhedron::platonic(kind, PlatonicSize::Circumradius(1.0)).expect("platonic");
     mesh(p.vertices().to_vec(), p.faces())
 }
@@ -35,14 +35,14 @@ fn torus_of_triangles() -> HalfEdgeMesh {
 }
 
 /// An `n × n` grid of unit quads in the plane z = 0 (open, one boundary loop).
-fn quad_grid(n: u32) -> HalfEdgeMesh {
+pub(super) fn quad_grid(n: u32) -> HalfEdgeMesh {
     let (positions, quads) = grid(n, |_, _| 0.0);
     mesh(positions, &quads)
 }
 
 /// An `n × n` grid of unit squares, each split by the same diagonal (interior valence 6), with
 /// heights `z(x, y)`.
-fn triangle_grid(n: u32, z: impl Fn(f64, f64) -> f64) -> HalfEdgeMesh {
+pub(super) fn triangle_grid(n: u32, z: impl Fn(f64, f64) -> f64) -> HalfEdgeMesh {
     let (positions, quads) = grid(n, z);
     let triangles: Vec<Vec<u32>> = quads
         .iter()
@@ -51,7 +51,7 @@ fn triangle_grid(n: u32, z: impl Fn(f64, f64) -> f64) -> HalfEdgeMesh {
     mesh(positions, &triangles)
 }
 
-fn grid(n: u32, z: impl Fn(f64, f64) -> f64) -> (Vec<DVec3>, Vec<Vec<u32>>) {
+pub(super) fn grid(n: u32, z: impl Fn(f64, f64) -> f64) -> (Vec<DVec3>, Vec<Vec<u32>>) {
     let id = |i: u32, j: u32| j * (n + 1) + i;
     let mut positions = Vec::new();
     for j in 0..=n {

@@ -1,5 +1,6 @@
 //! Reading the `subdivide` node: `{"type": "subdivide", "scheme": "loop", "levels": 2, "child":
-//! {polyhedral node}}`. The child is built first (as any node); the subdivision itself runs
+//! {polyhedral node}}`, with an optional `"adaptive": TOL` (Loop and Catmull-Clark refine only
+//! where the surface is not flat to `TOL`). The child is built first (as any node); the subdivision itself runs
 //! through the reader's [`MeshResolver`](crate::primitive::MeshResolver) and the node becomes a
 //! mesh primitive that remembers its scheme, levels and child.
 
@@ -23,7 +24,11 @@ impl Params<'_, '_> {
             )
         })?;
         let levels = self.levels()?;
-        self.reject_unknown(&["scheme", "levels", "child"])?;
+        let adaptive = match super::find(self.entries, "adaptive") {
+            Some(_) => Some(self.positive("adaptive")?),
+            None => None,
+        };
+        self.reject_unknown(&["scheme", "levels", "adaptive", "child"])?;
         let child_at = self.at("child")?;
         let child = children
             .first()
@@ -34,12 +39,11 @@ impl Params<'_, '_> {
             };
             return Err(self.fail(child_at, "child", e));
         };
-        let mesh = MeshSolid::subdivided(primitive, scheme, levels, self.reader.resolver).map_err(
-            |e| match e {
+        let mesh = MeshSolid::subdivided(primitive, scheme, levels, adaptive, self.reader.resolver)
+            .map_err(|e| match e {
                 MeshSolidError::NotPolyhedral { .. } => self.fail(child_at, "child", e),
                 _ => self.reader.located(self.index, &self.path(), e),
-            },
-        )?;
+            })?;
         Ok(Solid::primitive(Primitive::Mesh(mesh)))
     }
 

@@ -48,11 +48,16 @@ pub(super) fn mesh(m: &MeshSolid) -> String {
         MeshSource::Subdivided {
             scheme,
             levels,
+            adaptive,
             child,
         } => {
             // The child is a polyhedral leaf (never itself subdivided): one fixed nesting level.
             let child = super::members(&NodeKind::Primitive((**child).clone()));
-            format!("\"scheme\": \"{scheme}\", \"levels\": {levels}, \"child\": {{{child}}}")
+            let adaptive =
+                adaptive.map_or(String::new(), |t| format!(", \"adaptive\": {}", num(t)));
+            format!(
+                "\"scheme\": \"{scheme}\", \"levels\": {levels}{adaptive}, \"child\": {{{child}}}"
+            )
         }
         MeshSource::Surface(spec) => super::surface::members(spec),
         MeshSource::Dual { child } => {

@@ -88,8 +88,10 @@ pub enum MeshSource {
     Subdivided {
         /// The scheme.
         scheme: SubdivisionScheme,
-        /// How many times it was applied.
+        /// How many times it was applied (adaptive: at most).
         levels: u32,
+        /// The adaptive tolerance, if the node has one.
+        adaptive: Option<f64>,
         /// The polyhedral child as written in the tree (`polyhedron`, `mesh`, `prism` or
         /// `platonic`; never itself subdivided, so this nests one level only).
         child: Box<Primitive>,

@@ -77,6 +77,9 @@ pub struct SubdivisionRequest<'a> {
     pub input: SubdivisionInput<'a>,
     /// The scheme.
     pub scheme: SubdivisionScheme,
-    /// How many times to apply it.
+    /// How many times to apply it (adaptive: at most).
     pub levels: u32,
+    /// Adaptive subdivision: refine only where the next level moves off a face by more than
+    /// this distance (Loop and Catmull-Clark); `None`: uniform.
+    pub adaptive: Option<f64>,
 }

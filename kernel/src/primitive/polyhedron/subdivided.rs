@@ -22,6 +22,7 @@ impl MeshSolid {
         child: &Primitive,
         scheme: SubdivisionScheme,
         levels: u32,
+        adaptive: Option<f64>,
         resolver: &dyn MeshResolver,
     ) -> Result<Self, MeshSolidError> {
         let not_polyhedral = || MeshSolidError::NotPolyhedral {
@@ -54,6 +55,7 @@ impl MeshSolid {
             input,
             scheme,
             levels,
+            adaptive,
         };
         let mesh: IndexedMesh = resolver
             .subdivide(&request)
@@ -61,6 +63,7 @@ impl MeshSolid {
         let source = MeshSource::Subdivided {
             scheme,
             levels,
+            adaptive,
             child: Box::new(child.clone()),
         };
         Self::with_source(source, &mesh)
@@ -90,7 +93,7 @@ impl Solid {
                 found: self.kind().name(),
             });
         };
-        let mesh = MeshSolid::subdivided(child, scheme, levels, resolver)?;
+        let mesh = MeshSolid::subdivided(child, scheme, levels, None, resolver)?;
         Ok(Solid::primitive(Primitive::Mesh(mesh)))
     }
 }

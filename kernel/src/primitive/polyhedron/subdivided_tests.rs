@@ -108,6 +108,22 @@ fn subdivide_nodes_round_trip_losslessly() {
     ] {
         assert!(text.contains(part), "{part} not in {text}");
     }
+    // The adaptive tolerance is read, written back and makes a different solid.
+    let adaptive = r#"{"type": "subdivide", "scheme": "loop", "levels": 2, "adaptive": 0.01, "child": {"type": "platonic", "solid": "icosahedron", "circumradius": 1}}"#;
+    let t = read(adaptive).unwrap();
+    let written = json::to_string(&t);
+    assert!(
+        written.contains(r#""levels": 2, "adaptive": 0.01, "child""#),
+        "{written}"
+    );
+    assert!(json::from_str_with(&written, &Shrink).unwrap() == t);
+    assert!(t != read(&adaptive.replace(r#""adaptive": 0.01, "#, "")).unwrap());
+    for bad in ["0", "-1", "\"x\""] {
+        let e = read(&adaptive.replace("0.01", bad))
+            .unwrap_err()
+            .to_string();
+        assert!(e.contains("adaptive"), "{e}");
+    }
     // Different levels or schemes are different solids.
     let a = read(r#"{"type": "subdivide", "scheme": "catmull-clark", "levels": 1, "child": {"type": "platonic", "solid": "cube", "edge": 2}}"#).unwrap();
     let b = read(r#"{"type": "subdivide", "scheme": "catmull-clark", "levels": 2, "child": {"type": "platonic", "solid": "cube", "edge": 2}}"#).unwrap();
