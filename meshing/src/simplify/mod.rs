@@ -248,13 +248,11 @@ impl Run {
                 self.refuse(a, b);
                 continue;
             };
+            // The quadric only orders the edges and proposes a position: its planes are the
+            // input's triangles, which dual contouring leaves up to a few tenths of a cell off a
+            // sharp edge, so its error says nothing about the distance to the surface (refusing
+            // on it kept a turned cube at 328 triangles). The checks below decide.
             let (q, x) = self.merged(a, b, tolerance);
-            // Quick refusal: some plane of the merged clusters is farther than the tolerance.
-            if q.error(x) > q.count as f64 * tolerance * tolerance {
-                self.refuse(a, b);
-                stats.refused += 1;
-                continue;
-            }
             let pa = self.surface.positions[a as usize];
             let pb = self.surface.positions[b as usize];
             let mut candidates = [x, pa, pb];
