@@ -150,8 +150,10 @@ impl Checker<'_> {
         true
     }
 
-    /// Every witness of the star's triangles within the tolerance of a new triangle; the nearest
-    /// one takes it over.
+    /// Every witness of the star's triangles within the tolerance of a new triangle. A witness
+    /// of a kept triangle stays with it when that triangle's new shape is within the tolerance
+    /// (one distance per witness, the common case); any other goes to the nearest new triangle
+    /// (triangles whose boxes are farther than the best distance so far are skipped).
     fn witnesses_covered(
         &self,
         star: &Star,
@@ -159,12 +161,28 @@ impl Checker<'_> {
         owned: &[Vec<u32>],
     ) -> Option<Vec<(u32, u32)>> {
         let limit = self.tolerance * self.tolerance;
+        let boxes: Vec<(DVec3, DVec3)> = new
+            .iter()
+            .map(|(_, p)| (p[0].min(p[1]).min(p[2]), p[0].max(p[1]).max(p[2])))
+            .collect();
         let mut out = Vec::new();
-        for &t in star.removed.iter().chain(&star.kept) {
+        let removed = star.removed.iter().map(|&t| (t, None));
+        let kept = star.kept.iter().enumerate().map(|(k, &t)| (t, Some(k)));
+        for (t, own) in removed.chain(kept) {
             for &w in &owned[t as usize] {
                 let q = self.witnesses[w as usize];
+                if let Some(k) = own
+                    && closest_point_on_triangle(q, new[k].1).distance_squared(q) <= limit
+                {
+                    out.push((w, t));
+                    continue;
+                }
                 let mut best = (f64::INFINITY, 0);
                 for (k, (_, p)) in new.iter().enumerate() {
+                    let (lo, hi) = boxes[k];
+                    if (q.clamp(lo, hi) - q).length_squared() >= best.0 {
+                        continue;
+                    }
                     let d2 = closest_point_on_triangle(q, *p).distance_squared(q);
                     if d2 < best.0 {
                         best = (d2, k);

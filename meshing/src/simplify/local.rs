@@ -2,6 +2,7 @@
 //! program gives the same values, bit for bit, as the whole one inside the cube, and the checks
 //! sample the field many times near few places.
 
+use crate::io::key_hash::KeyHash;
 use glam::DVec3;
 use solidkit_kernel::{Aabb, Evaluator};
 use std::cell::RefCell;
@@ -11,7 +12,7 @@ use std::collections::HashMap;
 pub(crate) struct LocalField<'a, E: Evaluator> {
     field: &'a E,
     size: f64,
-    cache: RefCell<HashMap<[i64; 3], Option<E>>>,
+    cache: RefCell<HashMap<[i64; 3], Option<E>, KeyHash>>,
     interval: RefCell<E::IntervalScratch>,
     point: RefCell<E::PointScratch>,
     gradient: RefCell<E::GradientScratch>,

@@ -3,6 +3,7 @@
 //! (at most eight) cells its box meets; a query visits, at every level in use, the cells the query
 //! box meets, or all occupied cells of the level when those are fewer.
 
+use crate::io::key_hash::KeyHash;
 use glam::DVec3;
 use std::collections::HashMap;
 
@@ -14,7 +15,7 @@ type Key = [i64; 3];
 /// The triangle index.
 pub(crate) struct Spatial {
     base: f64,
-    levels: Vec<HashMap<Key, Vec<u32>>>,
+    levels: Vec<HashMap<Key, Vec<u32>, KeyHash>>,
     /// Where each triangle is filed: its level and box (its cells follow from the box).
     filed: Vec<Option<(usize, [DVec3; 2])>>,
 }
@@ -28,7 +29,7 @@ impl Spatial {
             } else {
                 1.0
             },
-            levels: (0..LEVELS).map(|_| HashMap::new()).collect(),
+            levels: (0..LEVELS).map(|_| HashMap::default()).collect(),
             filed: vec![None; triangles],
         }
     }
