@@ -2,8 +2,10 @@
 //! they share.
 //!
 //! Broad phase (`morton.rs`): the triangles' boxes, rounded outwards to `f32`, sorted along a
-//! Morton curve and grouped under an implicit tree; every leaf queries the leaves at or after it,
-//! in parallel (rayon), and the narrow phase reads the triangles in that curve order. Narrow
+//! Morton curve and grouped under an implicit tree; every group of four leaves queries the tree
+//! once for the leaves at or after it (each leaf keeps those that meet its own box), in parallel
+//! (rayon); each triangle is tested against the four boxes of a found leaf at once, without a
+//! branch per box, and the narrow phase reads the triangles in that curve order. Narrow
 //! phase: exact triangle–triangle tests on orientation predicates, with neighbours (shared
 //! vertex or edge) counted only when they meet beyond what they share (a fold-back, a coplanar
 //! overlap); see `triangles.rs`.
@@ -43,7 +45,7 @@ use rayon::prelude::*;
 use crate::IndexedMesh;
 use crate::measure::MeasureError;
 use copies::Copies;
-use morton::{Box32, LEAF, LeafTree, curve_order};
+use morton::{Box32, GROUP, LEAF, LeafBoxes, LeafTree, curve_order};
 use predicates::Projection;
 use triangles::{Tri, meet_beyond_shared};
 
@@ -168,22 +170,22 @@ pub fn self_intersections(
     let boxes: Vec<Box32> = order.par_iter().map(|&o| boxes[o as usize]).collect();
     drop((active, order, projections));
     let tree = LeafTree::new(&boxes);
-    let total = (0..tree.leaf_count())
+    let boxes = LeafBoxes::of(&boxes);
+    let level = tree.group_level();
+    let total = (0..tree.node_count(level))
         .into_par_iter()
-        .with_min_len(CHUNK)
+        .with_min_len(CHUNK / GROUP)
         .fold(
             || (Scratch::default(), SelfIntersections::default()),
-            |(mut scratch, mut found), leaf| {
-                leaf_pairs(
-                    &tree,
-                    &items,
-                    &boxes,
-                    &copies,
-                    leaf,
-                    &mut scratch,
-                    &mut found,
+            |(mut scratch, mut found), group| {
+                let search = Search {
+                    tree: &tree,
+                    items: &items,
+                    boxes: &boxes,
+                    copies: &copies,
                     limit,
-                );
+                };
+                search.group_pairs(level, group, &mut scratch, &mut found);
                 (scratch, found)
             },
         )
@@ -207,53 +209,86 @@ struct Item {
 #[derive(Debug, Default)]
 struct Scratch {
     stack: Vec<(u8, u32)>,
+    /// The leaves found for a group.
     leaves: Vec<u32>,
+    /// Those of them that meet one leaf of the group.
+    mine: Vec<u32>,
     hits: Vec<[u32; 2]>,
 }
 
-/// Adds the intersecting pairs of the triangles in leaf `leaf` with those of the same or later
-/// leaves (later slots within the same leaf).
-#[allow(clippy::too_many_arguments)]
-fn leaf_pairs(
-    tree: &LeafTree,
-    items: &[Item],
-    boxes: &[Box32],
-    copies: &Copies,
-    leaf: usize,
-    scratch: &mut Scratch,
-    found: &mut SelfIntersections,
+/// What the workers of the pair search share.
+struct Search<'a> {
+    tree: &'a LeafTree,
+    items: &'a [Item],
+    boxes: &'a [LeafBoxes],
+    copies: &'a Copies,
     limit: usize,
-) {
-    let Scratch {
-        stack,
-        leaves,
-        hits,
-    } = scratch;
-    leaves.clear();
-    tree.leaves_after(leaf, &tree.leaf_box(leaf), stack, leaves);
-    hits.clear();
-    let own = leaf * LEAF..((leaf + 1) * LEAF).min(items.len());
-    for a in own {
-        let (ia, ba) = (&items[a], &boxes[a]);
-        for &other in leaves.iter() {
-            let other = other as usize;
-            let from = if other == leaf { a + 1 } else { other * LEAF };
-            for b in from..((other + 1) * LEAF).min(items.len()) {
-                if !ba.meets(&boxes[b]) {
-                    continue;
-                }
-                let ib = &items[b];
-                // Lower index first, as the pairwise definition reads.
-                let (x, y) = if ia.id < ib.id { (ia, ib) } else { (ib, ia) };
-                if meet_beyond_shared(x.vertices, &x.tri, y.vertices, &y.tri) {
-                    copies.add_pair(ia.id, ib.id, &mut found.count, hits);
-                }
+}
+
+impl Search<'_> {
+    /// Adds the intersecting pairs of the triangles in the leaves of node `group` at `level`
+    /// with those of the same or later leaves (later slots within the same leaf).
+    fn group_pairs(
+        &self,
+        level: usize,
+        group: usize,
+        scratch: &mut Scratch,
+        found: &mut SelfIntersections,
+    ) {
+        let Scratch {
+            stack,
+            leaves,
+            mine,
+            hits,
+        } = scratch;
+        let first = group << level;
+        let last = ((group + 1) << level).min(self.tree.leaf_count());
+        leaves.clear();
+        self.tree
+            .leaves_after(first, &self.tree.node_box(level, group), stack, leaves);
+        for leaf in first..last {
+            let own = self.tree.leaf_box(leaf);
+            mine.clear();
+            mine.extend(leaves.iter().copied().filter(|&other| {
+                other as usize >= leaf && self.tree.leaf_box(other as usize).meets(&own)
+            }));
+            hits.clear();
+            self.leaf_pairs(leaf, mine, &mut found.count, hits);
+            if !hits.is_empty() {
+                found.examples.extend_from_slice(hits);
+                found.examples.sort_unstable();
+                found.examples.truncate(self.limit);
             }
         }
     }
-    if !hits.is_empty() {
-        found.examples.extend_from_slice(hits);
-        found.examples.sort_unstable();
-        found.examples.truncate(limit);
+
+    /// Adds the intersecting pairs of the triangles in leaf `leaf` with those of the leaves
+    /// `others` (at or after it; later slots within the same leaf) to `count`, their pairs to
+    /// `hits`.
+    fn leaf_pairs(&self, leaf: usize, others: &[u32], count: &mut usize, hits: &mut Vec<[u32; 2]>) {
+        let (items, boxes) = (self.items, self.boxes);
+        let own = &boxes[leaf];
+        for slot in 0..LEAF.min(items.len() - leaf * LEAF) {
+            let a = leaf * LEAF + slot;
+            let (ia, ba) = (&items[a], own.lane(slot));
+            for &other in others {
+                let other = other as usize;
+                let mut mask = boxes[other].meeting(&ba);
+                if other == leaf {
+                    // Later slots of the same leaf only.
+                    mask &= !0u32 << (slot + 1);
+                }
+                while mask != 0 {
+                    let b = other * LEAF + mask.trailing_zeros() as usize;
+                    mask &= mask - 1;
+                    let ib = &items[b];
+                    // Lower index first, as the pairwise definition reads.
+                    let (x, y) = if ia.id < ib.id { (ia, ib) } else { (ib, ia) };
+                    if meet_beyond_shared(x.vertices, &x.tri, y.vertices, &y.tri) {
+                        self.copies.add_pair(ia.id, ib.id, count, hits);
+                    }
+                }
+            }
+        }
     }
 }

@@ -7,12 +7,19 @@
 //! together and the tree's boxes stay small; building it is one sort and one pass per level, far
 //! cheaper than a SAH or PLOC tree, and the narrow phase reads triangles in curve order
 //! (cache-friendly). Each leaf is queried only against leaves at or after it, so every pair of
-//! boxes is visited once.
+//! boxes is visited once; the leaves of one node at level 2 ([`GROUP`] leaves) share one query
+//! with the node's box, and a box is tested against a leaf's four boxes at once
+//! ([`LeafBoxes::meeting`]).
 
 use rayon::prelude::*;
 
 /// Boxes per leaf.
 pub(crate) const LEAF: usize = 4;
+
+/// Leaves per tree query (a power of two): the leaves of one node query the tree once with the
+/// node's box, then keep the leaves found that meet their own box, which gives each leaf the
+/// same leaves as a query of its own at a quarter of the traversals.
+pub(crate) const GROUP: usize = 4;
 
 /// An axis-aligned box in single precision.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -47,6 +54,64 @@ impl Box32 {
             && other.lo[1] <= self.hi[1]
             && self.lo[2] <= other.hi[2]
             && other.lo[2] <= self.hi[2]
+    }
+}
+
+/// The boxes of one leaf side by side, one array per bound and axis (lanes past the last box
+/// hold an empty box, which meets nothing), so one box is tested against all four with no
+/// branch per lane.
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct LeafBoxes {
+    lo: [[f32; LEAF]; 3],
+    hi: [[f32; LEAF]; 3],
+}
+
+impl LeafBoxes {
+    /// The leaves of `boxes` (in curve order), [`LEAF`] boxes each.
+    pub(crate) fn of(boxes: &[Box32]) -> Vec<Self> {
+        boxes
+            .par_chunks(LEAF)
+            .map(|chunk| {
+                let mut leaf = Self {
+                    lo: [[f32::INFINITY; LEAF]; 3],
+                    hi: [[f32::NEG_INFINITY; LEAF]; 3],
+                };
+                for (lane, b) in chunk.iter().enumerate() {
+                    for k in 0..3 {
+                        leaf.lo[k][lane] = b.lo[k];
+                        leaf.hi[k][lane] = b.hi[k];
+                    }
+                }
+                leaf
+            })
+            .collect()
+    }
+
+    /// The box in lane `lane`.
+    #[inline]
+    pub(crate) fn lane(&self, lane: usize) -> Box32 {
+        Box32 {
+            lo: [0, 1, 2].map(|k| self.lo[k][lane]),
+            hi: [0, 1, 2].map(|k| self.hi[k][lane]),
+        }
+    }
+
+    /// Bit `lane` set for every lane whose box meets `b` (closed boxes, as [`Box32::meets`]).
+    #[inline]
+    pub(crate) fn meeting(&self, b: &Box32) -> u32 {
+        // Lane by lane over whole arrays, with `&` rather than `&&`: no branch per comparison,
+        // and a shape the compiler turns into vector compares.
+        let mut meets = [true; LEAF];
+        for k in 0..3 {
+            let (lo, hi) = (&self.lo[k], &self.hi[k]);
+            for lane in 0..LEAF {
+                meets[lane] &= (b.lo[k] <= hi[lane]) & (lo[lane] <= b.hi[k]);
+            }
+        }
+        meets
+            .iter()
+            .enumerate()
+            .fold(0, |mask, (lane, &m)| mask | u32::from(m) << lane)
     }
 }
 
@@ -151,6 +216,21 @@ impl LeafTree {
         self.levels[0][leaf]
     }
 
+    /// The tree level whose nodes gather [`GROUP`] leaves (lower for a small tree).
+    pub(crate) fn group_level(&self) -> usize {
+        GROUP.trailing_zeros().min(self.levels.len() as u32 - 1) as usize
+    }
+
+    /// Number of nodes at `level`.
+    pub(crate) fn node_count(&self, level: usize) -> usize {
+        self.levels[level].len()
+    }
+
+    /// The box of node `i` at `level` (it covers leaves `i·2^level .. (i+1)·2^level`).
+    pub(crate) fn node_box(&self, level: usize, i: usize) -> Box32 {
+        self.levels[level][i]
+    }
+
     /// Pushes onto `out` every leaf at or after `leaf` whose box meets `query`, using `stack`
     /// as the work list.
     pub(crate) fn leaves_after(
@@ -180,5 +260,52 @@ impl LeafTree {
                 }
             }
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// `meeting` agrees with `meets` lane by lane, on boxes drawn from a small lattice (so that
+    /// touching faces and equal bounds are common), and empty lanes meet nothing.
+    #[test]
+    fn four_lanes_agree_with_the_box_test() {
+        let mut state = 99u64;
+        let mut next = || {
+            state = state
+                .wrapping_mul(6_364_136_223_846_793_005)
+                .wrapping_add(1_442_695_040_888_963_407);
+            ((state >> 33) % 6) as f32
+        };
+        let mut random_box = || {
+            let (a, b) = ([next(), next(), next()], [next(), next(), next()]);
+            Box32 {
+                lo: [0, 1, 2].map(|k| a[k].min(b[k])),
+                hi: [0, 1, 2].map(|k| a[k].max(b[k])),
+            }
+        };
+        let (mut met, mut missed) = (0, 0);
+        for round in 0..2000 {
+            let lanes = 1 + round % LEAF;
+            let boxes: Vec<Box32> = (0..lanes).map(|_| random_box()).collect();
+            let leaf = LeafBoxes::of(&boxes)[0];
+            let query = random_box();
+            let mask = leaf.meeting(&query);
+            for lane in 0..LEAF {
+                let own = boxes.get(lane);
+                let want = own.is_some_and(|b| b.meets(&query));
+                assert_eq!(mask >> lane & 1 == 1, want, "round {round} lane {lane}");
+                if let Some(b) = own {
+                    assert_eq!(leaf.lane(lane), *b);
+                    if want {
+                        met += 1;
+                    } else {
+                        missed += 1;
+                    }
+                }
+            }
+        }
+        assert!(met > 500 && missed > 500, "{met} {missed}");
     }
 }

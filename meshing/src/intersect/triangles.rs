@@ -137,14 +137,17 @@ pub(crate) fn meet_beyond_shared_exact(ti: [u32; 3], i: &Tri, tj: [u32; 3], j: &
 
 /// The decision, with or without the floating-point filters.
 fn decide(ti: [u32; 3], i: &Tri, tj: [u32; 3], j: &Tri, filter: bool) -> bool {
-    // Position in `tj` of each corner of `ti`, if shared.
-    let shared = ti.map(|v| tj.iter().position(|&w| w == v));
-    match shared.iter().flatten().count() {
+    // Bit `3·a + b` set when corner `a` of `ti` is corner `b` of `tj` (the indices are
+    // distinct within each, so each row and column has at most one bit).
+    let row =
+        |v: u32| u32::from(v == tj[0]) | u32::from(v == tj[1]) << 1 | u32::from(v == tj[2]) << 2;
+    let shared = row(ti[0]) | row(ti[1]) << 3 | row(ti[2]) << 6;
+    match shared.count_ones() {
         0 => !(filter && filter::separated(i.p, j.p)) && i.meets(j),
         1 => {
             // The shared vertex and the corners other than it, in each triangle.
-            let ki = shared.iter().position(Option::is_some).unwrap_or(0);
-            let kj = shared[ki].unwrap_or(0);
+            let bit = shared.trailing_zeros() as usize;
+            let (ki, kj) = (bit / 3, bit % 3);
             let (a, b) = (i.p[(ki + 1) % 3], i.p[(ki + 2) % 3]);
             let (c, d) = (j.p[(kj + 1) % 3], j.p[(kj + 2) % 3]);
             if filter && filter::separated_at_vertex(i.p[ki], [a, b], [c, d]) {
@@ -153,8 +156,13 @@ fn decide(ti: [u32; 3], i: &Tri, tj: [u32; 3], j: &Tri, filter: bool) -> bool {
             meet_at_vertex(i.p[ki], i, [a, b], j, [c, d])
         }
         2 => {
-            let ki = shared.iter().position(Option::is_none).unwrap_or(0);
-            let kj = (0..3).find(|&k| !ti.contains(&tj[k])).unwrap_or(0);
+            // The corner of each that is not shared: the empty row, the empty column.
+            let ki = (0..3)
+                .find(|&a| shared >> (3 * a) & 0b111 == 0)
+                .unwrap_or(0);
+            let kj = (0..3)
+                .find(|&b| shared >> b & 0b1_001_001 == 0)
+                .unwrap_or(0);
             let (u, w) = (i.p[(ki + 1) % 3], i.p[(ki + 2) % 3]);
             let (a, b) = (i.p[ki], j.p[kj]);
             if filter && filter::apart_across_edge(u, w, a, b) {
