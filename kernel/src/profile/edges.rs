@@ -29,11 +29,11 @@ thread_local! {
 /// The edges of a polygon's loops in a tree.
 #[derive(Debug, Clone)]
 pub(super) struct EdgeIndex {
-    tree: TriangleBvh,
+    pub(super) tree: TriangleBvh,
     /// Number of the first edge of each loop, and the total at the end.
     starts: Vec<usize>,
     /// The largest coordinate magnitude of the corners (for the rounding margin).
-    scale: f64,
+    pub(super) scale: f64,
 }
 
 impl EdgeIndex {
@@ -66,7 +66,7 @@ impl EdgeIndex {
     }
 
     /// Loop and corner of edge `g`.
-    fn locate(&self, g: usize) -> (usize, usize) {
+    pub(super) fn locate(&self, g: usize) -> (usize, usize) {
         let r = self.starts.partition_point(|&s| s <= g) - 1;
         (r, g - self.starts[r])
     }

@@ -2,6 +2,7 @@
 //! an exact signed distance in its plane, area and centroid (for Pappus volumes), outlines and
 //! cap triangulations (for tessellations).
 
+mod block;
 mod circle;
 mod edges;
 mod error;
@@ -12,6 +13,8 @@ mod triangulate;
 
 #[cfg(test)]
 mod tests;
+#[cfg(test)]
+mod tests_block;
 
 pub use circle::Circle;
 pub use error::ProfileError;
@@ -92,6 +95,19 @@ impl Profile {
             Profile::Circle(c) => c.distance_gradient(q),
             Profile::Rectangle(r) => r.distance_gradient(q),
             Profile::Polygon(p) => p.distance_gradient(q),
+        }
+    }
+
+    /// [`Profile::distance_gradient`] at every point of `qs`, appended to `out` (the same
+    /// answers; a polygon with many edges measures a block of nearby points faster together).
+    pub fn distance_gradients(&self, qs: &[DVec2], out: &mut Vec<(f64, DVec2)>) {
+        match self {
+            Profile::Polygon(p) if p.index.is_some() => {
+                let mut near = Vec::with_capacity(qs.len());
+                p.nearest_many(qs, &mut near);
+                out.extend(near.iter().map(|n| (n.distance, n.gradient)));
+            }
+            _ => out.extend(qs.iter().map(|&q| self.distance_gradient(q))),
         }
     }
 

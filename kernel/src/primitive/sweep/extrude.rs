@@ -26,6 +26,7 @@ use crate::primitive::{PrimitiveError, Shape, lipschitz_interval};
 use crate::profile::Profile;
 use crate::{Aabb, Interval};
 use glam::{DVec2, DVec3};
+use std::cell::RefCell;
 
 /// Smallest slice scale used in the field (the top slice of a zero-scale extrusion is a point).
 const MIN_SLICE_SCALE: f64 = 1e-12;
@@ -151,14 +152,13 @@ impl Extrude {
         (1.0 + self.scale_rate * s, self.twist_rate * s)
     }
 
-    /// Field value and gradient.
-    fn eval(&self, p: DVec3) -> (f64, DVec3) {
-        let h2 = 0.5 * self.height;
+    /// Where `p` meets its slice: everything the field needs besides the profile's distance at
+    /// [`SlicePoint::w`].
+    fn slice_point(&self, p: DVec3) -> SlicePoint {
         let q = DVec2::new(p.x, p.y);
         let rho = q.length();
-        let bounded = self.twist_rate != 0.0 || self.anisotropic();
         // Radial projection onto the clamp cylinder (twisted or anisotropic extrusions only).
-        let (qc, clamped) = if bounded && rho > self.radius {
+        let (qc, clamped) = if self.bounded() && rho > self.radius {
             (q * (self.radius / rho), true)
         } else {
             (q, false)
@@ -167,10 +167,44 @@ impl Extrude {
         // A zero scale shrinks the top slice to a point: keep the division finite there
         // (m·d(u/k) tends to |u|, the distance to the apex, as k → 0).
         let k = k.max(DVec2::splat(MIN_SLICE_SCALE));
-        let (sin, cos) = theta.sin_cos();
+        // Without twist the angle is zero: the same sine and cosine without the call.
+        let (sin, cos) = if theta == 0.0 {
+            (theta, 1.0)
+        } else {
+            theta.sin_cos()
+        };
         let u = DVec2::new(cos * qc.x + sin * qc.y, -sin * qc.x + cos * qc.y);
-        let w = u / k;
-        let (d, g) = self.profile.distance_gradient(w);
+        SlicePoint {
+            q,
+            rho,
+            clamped,
+            k,
+            sin,
+            cos,
+            u,
+            w: u / k,
+        }
+    }
+
+    /// Whether the field is bounded by the clamp cylinder (twisted or anisotropic extrusions).
+    fn bounded(&self) -> bool {
+        self.twist_rate != 0.0 || self.anisotropic()
+    }
+
+    /// Field value and gradient at `p` from its slice point `s` and the profile's distance `d`
+    /// and gradient `g` at `s.w`.
+    fn finish(&self, p: DVec3, s: &SlicePoint, d: f64, g: DVec2) -> (f64, DVec3) {
+        let h2 = 0.5 * self.height;
+        let SlicePoint {
+            q,
+            rho,
+            clamped,
+            k,
+            sin,
+            cos,
+            u,
+            w,
+        } = *s;
         // m = min(kx, ky) and its rate.
         let (m, dm) = if k.x <= k.y {
             (k.x, self.scale_rate.x)
@@ -198,13 +232,115 @@ impl Extrude {
         };
         let slice = (sigma / l, DVec3::new(gq.x, gq.y, gz) / l);
         let f = capped(slice, slab(p.z, h2));
-        if bounded {
+        if self.bounded() {
             let u = if rho > 0.0 { q / rho } else { DVec2::X };
             max(f, (rho - self.radius, DVec3::new(u.x, u.y, 0.0)))
         } else {
             f
         }
     }
+
+    /// The values of a plain prism (no twist, no scale) over the box `b` (finite): within the
+    /// box's half-diagonal of the value at its centre (the Lipschitz bound), and also within
+    /// the bound that the slice distance is 1-Lipschitz in the plane, so it lies within the
+    /// rectangle's half-diagonal of its value at the rectangle's centre, the distance beyond
+    /// the slab is known exactly, and the capped combination grows with both (tighter: issue 14,
+    /// the octree keeps fewer of the many small extrusions of an offset text).
+    fn prism_interval(&self, b: &Aabb) -> Interval {
+        let (c, r) = (b.center(), b.half_extents());
+        let d = self.profile.distance(DVec2::new(c.x, c.y));
+        let h2 = 0.5 * self.height;
+        let dz = DVec3::Z;
+        // The Lipschitz bound: the value at the centre is the one `value` gives.
+        let at_centre = capped((d, dz), slab(c.z, h2)).0;
+        let loose = Interval::around(at_centre, r.length());
+        let r2 = DVec2::new(r.x, r.y).length();
+        let (z0, z1) = (b.min.z.abs(), b.max.z.abs());
+        let e_lo = if b.min.z <= 0.0 && b.max.z >= 0.0 {
+            -h2
+        } else {
+            z0.min(z1) - h2
+        };
+        let e_hi = z0.max(z1) - h2;
+        let lo = capped((d - r2, dz), (e_lo, dz)).0;
+        let hi = capped((d + r2, dz), (e_hi, dz)).0;
+        if !(lo.is_finite() && hi.is_finite()) {
+            return loose;
+        }
+        // Room for the rounding of the samples (single precision).
+        let pad = 1e-6 * (lo.abs().max(hi.abs()) + r2);
+        Interval::new(loose.lo.max(lo - pad), loose.hi.min(hi + pad))
+    }
+
+    /// Field value and gradient.
+    fn eval(&self, p: DVec3) -> (f64, DVec3) {
+        let s = self.slice_point(p);
+        let (d, g) = self.profile.distance_gradient(s.w);
+        self.finish(p, &s, d, g)
+    }
+
+    /// Field values and gradients at many points: the profile measures all slice points at once
+    /// (a many-edged polygon is faster so), the answers are [`Extrude::eval`]'s.
+    fn eval_many(
+        &self,
+        points: impl Iterator<Item = DVec3>,
+        mut f: impl FnMut(usize, (f64, DVec3)),
+    ) {
+        BATCH.with(|cell| {
+            let mut guard = cell.try_borrow_mut().ok();
+            let mut fresh = Batch::default();
+            let b = guard.as_deref_mut().unwrap_or(&mut fresh);
+            b.points.clear();
+            b.slices.clear();
+            b.ws.clear();
+            b.distances.clear();
+            for p in points {
+                let s = self.slice_point(p);
+                b.points.push(p);
+                b.ws.push(s.w);
+                b.slices.push(s);
+            }
+            self.profile.distance_gradients(&b.ws, &mut b.distances);
+            for (i, ((p, s), &(d, g))) in
+                b.points.iter().zip(&b.slices).zip(&b.distances).enumerate()
+            {
+                f(i, self.finish(*p, s, d, g));
+            }
+        });
+    }
+}
+
+/// Where a point meets its slice of an [`Extrude`].
+#[derive(Debug, Clone, Copy)]
+struct SlicePoint {
+    /// The point's `x, y`.
+    q: DVec2,
+    /// Its distance from the axis.
+    rho: f64,
+    /// Whether it was projected onto the clamp cylinder.
+    clamped: bool,
+    /// The slice's scale per axis.
+    k: DVec2,
+    /// Sine and cosine of the slice's turn.
+    sin: f64,
+    cos: f64,
+    /// The (projected) point turned back by the slice's angle.
+    u: DVec2,
+    /// The profile point: `u / k`.
+    w: DVec2,
+}
+
+/// The buffers of [`Extrude::eval_many`], reused by the thread.
+#[derive(Debug, Default)]
+struct Batch {
+    points: Vec<DVec3>,
+    slices: Vec<SlicePoint>,
+    ws: Vec<DVec2>,
+    distances: Vec<(f64, DVec2)>,
+}
+
+thread_local! {
+    static BATCH: RefCell<Batch> = RefCell::new(Batch::default());
 }
 
 impl Shape for Extrude {
@@ -215,7 +351,10 @@ impl Shape for Extrude {
         self.eval(p).1
     }
     fn interval(&self, b: &Aabb) -> Interval {
-        lipschitz_interval(self, b)
+        if self.bounded() || self.scale != DVec2::ONE || !b.min.is_finite() || !b.max.is_finite() {
+            return lipschitz_interval(self, b);
+        }
+        self.prism_interval(b)
     }
     fn bbox(&self) -> Aabb {
         let h2 = 0.5 * self.height;
@@ -227,6 +366,17 @@ impl Shape for Extrude {
         let (lo, hi) = self.profile.bounds();
         let (a, b) = (lo.min(lo * self.scale), hi.max(hi * self.scale));
         Aabb::new(DVec3::new(a.x, a.y, -h2), DVec3::new(b.x, b.y, h2))
+    }
+    fn values_gradients(&self, pts: &[DVec3], values: &mut [f64], gradients: &mut [DVec3]) {
+        self.eval_many(pts.iter().copied(), |i, (v, g)| {
+            values[i] = v;
+            gradients[i] = g;
+        });
+    }
+    fn values_f32(&self, x: &[f32], y: &[f32], z: &[f32], out: &mut [f32]) {
+        let n = out.len();
+        let points = (0..n).map(|i| DVec3::new(x[i] as f64, y[i] as f64, z[i] as f64));
+        self.eval_many(points, |i, (v, _)| out[i] = v as f32);
     }
     fn sublevel_boxes_hold(&self) -> bool {
         // A slope-divided distance bound: see `Shape::sublevel_boxes_hold`.
