@@ -27,6 +27,7 @@
 //! 8 · 10⁸, while the count and the examples stay those of the pairwise definition.
 
 mod copies;
+mod corners;
 mod filter;
 mod morton;
 mod predicates;
@@ -45,6 +46,7 @@ use rayon::prelude::*;
 use crate::IndexedMesh;
 use crate::measure::MeasureError;
 use copies::Copies;
+use corners::{Corners, Item};
 use morton::{Box32, GROUP, LEAF, LeafBoxes, LeafTree, curve_order};
 use predicates::Projection;
 use triangles::{Tri, meet_beyond_shared};
@@ -152,27 +154,62 @@ pub fn self_intersections(
         })
         .collect();
     let order = curve_order(&boxes);
-    let items: Vec<Item> = order
+    let boxes: Vec<Box32> = order.par_iter().map(|&o| boxes[o as usize]).collect();
+    let sorted = Sorted {
+        ids: &ids,
+        projections: &projections,
+        active: &active,
+        order: &order,
+        boxes,
+    };
+    let total = if <[[f32; 3]; 3]>::holds(&mesh.positions) {
+        search::<[[f32; 3]; 3]>(mesh, sorted, &copies, limit)
+    } else {
+        search::<[DVec3; 3]>(mesh, sorted, &copies, limit)
+    };
+    Ok(copies.among_themselves(limit).absorb(total, limit))
+}
+
+/// The triangles taking part, in curve order.
+struct Sorted<'a> {
+    /// Usable triangles (mesh indices).
+    ids: &'a [u32],
+    /// Their projections (`None`: degenerate).
+    projections: &'a [Option<Projection>],
+    /// The representatives (positions in `ids`).
+    active: &'a [u32],
+    /// The curve order of `active`.
+    order: &'a [u32],
+    /// The boxes of `active` in curve order.
+    boxes: Vec<Box32>,
+}
+
+/// The pair search over the triangles of `sorted`, their corners stored as `C`.
+fn search<C: Corners>(
+    mesh: &IndexedMesh,
+    sorted: Sorted<'_>,
+    copies: &Copies,
+    limit: usize,
+) -> SelfIntersections {
+    let items: Vec<Item<C>> = sorted
+        .order
         .par_iter()
         .filter_map(|&o| {
-            let k = active[o as usize] as usize;
-            let id = ids[k];
-            projections[k].map(|proj| Item {
+            let k = sorted.active[o as usize] as usize;
+            let id = sorted.ids[k];
+            sorted.projections[k].map(|proj| Item {
                 id,
                 vertices: mesh.triangles[id as usize],
-                tri: Tri {
-                    p: mesh.triangle_positions(id as usize),
-                    proj,
-                },
+                corners: C::store(mesh.triangle_positions(id as usize)),
+                proj,
             })
         })
         .collect();
-    let boxes: Vec<Box32> = order.par_iter().map(|&o| boxes[o as usize]).collect();
-    drop((active, order, projections));
-    let tree = LeafTree::new(&boxes);
-    let boxes = LeafBoxes::of(&boxes);
+    let tree = LeafTree::new(&sorted.boxes);
+    let boxes = LeafBoxes::of(&sorted.boxes);
+    drop(sorted);
     let level = tree.group_level();
-    let total = (0..tree.node_count(level))
+    (0..tree.node_count(level))
         .into_par_iter()
         .with_min_len(CHUNK / GROUP)
         .fold(
@@ -182,7 +219,7 @@ pub fn self_intersections(
                     tree: &tree,
                     items: &items,
                     boxes: &boxes,
-                    copies: &copies,
+                    copies,
                     limit,
                 };
                 search.group_pairs(level, group, &mut scratch, &mut found);
@@ -190,19 +227,7 @@ pub fn self_intersections(
             },
         )
         .map(|(_, found)| found)
-        .reduce(SelfIntersections::default, |a, b| a.absorb(b, limit));
-    Ok(copies.among_themselves(limit).absorb(total, limit))
-}
-
-/// A triangle taking part in the search.
-#[derive(Debug, Clone, Copy)]
-struct Item {
-    /// Index into the mesh's triangles.
-    id: u32,
-    /// Its vertex indices.
-    vertices: [u32; 3],
-    /// Its corners.
-    tri: Tri,
+        .reduce(SelfIntersections::default, |a, b| a.absorb(b, limit))
 }
 
 /// Reusable buffers of one worker.
@@ -217,15 +242,15 @@ struct Scratch {
 }
 
 /// What the workers of the pair search share.
-struct Search<'a> {
+struct Search<'a, C> {
     tree: &'a LeafTree,
-    items: &'a [Item],
+    items: &'a [Item<C>],
     boxes: &'a [LeafBoxes],
     copies: &'a Copies,
     limit: usize,
 }
 
-impl Search<'_> {
+impl<C: Corners> Search<'_, C> {
     /// Adds the intersecting pairs of the triangles in the leaves of node `group` at `level`
     /// with those of the same or later leaves (later slots within the same leaf).
     fn group_pairs(
@@ -271,6 +296,7 @@ impl Search<'_> {
         for slot in 0..LEAF.min(items.len() - leaf * LEAF) {
             let a = leaf * LEAF + slot;
             let (ia, ba) = (&items[a], own.lane(slot));
+            let ta = ia.tri();
             for &other in others {
                 let other = other as usize;
                 let mut mask = boxes[other].meeting(&ba);
@@ -282,9 +308,14 @@ impl Search<'_> {
                     let b = other * LEAF + mask.trailing_zeros() as usize;
                     mask &= mask - 1;
                     let ib = &items[b];
+                    let tb = ib.tri();
                     // Lower index first, as the pairwise definition reads.
-                    let (x, y) = if ia.id < ib.id { (ia, ib) } else { (ib, ia) };
-                    if meet_beyond_shared(x.vertices, &x.tri, y.vertices, &y.tri) {
+                    let ((x, tx), (y, ty)) = if ia.id < ib.id {
+                        ((ia, &ta), (ib, &tb))
+                    } else {
+                        ((ib, &tb), (ia, &ta))
+                    };
+                    if meet_beyond_shared(x.vertices, tx, y.vertices, ty) {
                         self.copies.add_pair(ia.id, ib.id, count, hits);
                     }
                 }
