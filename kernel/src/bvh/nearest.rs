@@ -38,12 +38,34 @@ impl TriangleBvh {
     /// The nearest point of the triangles to `q` (`None` for an empty tree). On exact ties the
     /// triangle reported is one of the nearest.
     pub fn nearest(&self, q: DVec3) -> Option<Nearest> {
-        let root = self.nodes.first()?;
-        let mut best = Nearest {
+        let best = Nearest {
             distance2: f64::INFINITY,
             point: q,
             slot: 0,
         };
+        self.nearest_below(q, best)
+    }
+
+    /// [`TriangleBvh::nearest`] starting from the triangle in slot `hint` (typically the nearest
+    /// triangle of a neighbouring query): its distance bounds the search from the start, so far
+    /// fewer nodes are opened. The distance found is the same (the minimum of the same exact
+    /// point–triangle distances); on exact ties the hint is kept. A hint out of range is ignored.
+    pub fn nearest_hinted(&self, q: DVec3, hint: u32) -> Option<Nearest> {
+        let Some(&corners) = self.corners.get(hint as usize) else {
+            return self.nearest(q);
+        };
+        let point = closest_point_on_triangle(q, corners);
+        let best = Nearest {
+            distance2: point.distance_squared(q),
+            point,
+            slot: hint,
+        };
+        self.nearest_below(q, best)
+    }
+
+    /// The search below the bound of `best`: every triangle nearer than it is found.
+    fn nearest_below(&self, q: DVec3, mut best: Nearest) -> Option<Nearest> {
+        let root = self.nodes.first()?;
         with_scratch(&STACK, |stack| {
             stack.push((0, box_distance2(root.min, root.max, q)));
             while let Some((index, d2)) = stack.pop() {

@@ -23,6 +23,7 @@ use super::super::{PrimitiveError, Shape, lipschitz_interval};
 use super::request::SubdivisionScheme;
 use super::resolve_error::ResolveError;
 use super::resolver::MeshResolver;
+use super::sign_balls::SignBalls;
 use super::tree::MeshTree;
 use crate::polyhedra::{Polyhedron, PolyhedronError, Prism};
 use crate::primitive::Primitive;
@@ -252,6 +253,41 @@ impl MeshSolid {
     }
 }
 
+impl MeshSolid {
+    /// The nearest point to `p`, the search bounded by the previous query's triangle if any
+    /// (batches come from grid blocks: neighbours share their nearest triangles).
+    fn nearest_after(&self, p: DVec3, hint: Option<u32>) -> crate::bvh::Nearest {
+        match hint {
+            Some(slot) => self.tree.nearest_hinted(p, slot),
+            None => self.tree.nearest(p),
+        }
+    }
+
+    /// [`MeshSolid::signed`], the sign taken from `balls` where one holds `p`; a point whose
+    /// winding number is computed becomes a ball.
+    fn signed_with(&self, p: DVec3, distance: f64, balls: &mut SignBalls) -> f64 {
+        if distance <= self.tree.tolerance || self.open_edges != 0 {
+            return self.signed(p, distance);
+        }
+        let inside = match balls.sign_at(p) {
+            Some(inside) => inside,
+            None => self.tree.winding_number(p) > 0.5,
+        };
+        balls.push(p, distance, inside);
+        if inside { -distance } else { distance }
+    }
+
+    /// The gradient at `p` from its nearest point and its value.
+    fn gradient_from(&self, p: DVec3, near: &crate::bvh::Nearest, value: f64) -> DVec3 {
+        if value != 0.0 {
+            (p - near.point) / value
+        } else {
+            let [a, b, c] = self.tree.triangles()[near.slot as usize];
+            (b - a).cross(c - a).normalize_or_zero()
+        }
+    }
+}
+
 /// Edges whose two directions are used unequally often, corners compared by position (so an
 /// unwelded mesh that is closed counts none).
 fn open_edges(mesh: &IndexedMesh) -> usize {
@@ -323,16 +359,38 @@ impl Shape for MeshSolid {
         self.signed(p, self.tree.nearest(p).distance2.sqrt())
     }
 
+    /// The values of [`Shape::value`], with the sign of a closed mesh's points taken from an
+    /// earlier point of the batch where that is sure (the `sign_balls` module): the winding number,
+    /// most of a mesh solid's cost, is then computed only for points near the surface; each
+    /// nearest-point search starts from the previous point's triangle (the same distance: the
+    /// minimum of the same exact point–triangle distances).
+    fn values_f32(&self, x: &[f32], y: &[f32], z: &[f32], out: &mut [f32]) {
+        let mut balls = SignBalls::default();
+        let mut hint = None;
+        for i in 0..out.len() {
+            let p = DVec3::new(x[i] as f64, y[i] as f64, z[i] as f64);
+            let near = self.nearest_after(p, hint);
+            hint = Some(near.slot);
+            out[i] = self.signed_with(p, near.distance2.sqrt(), &mut balls) as f32;
+        }
+    }
+
+    fn values_gradients(&self, pts: &[DVec3], values: &mut [f64], gradients: &mut [DVec3]) {
+        // No hints here: on exact ties of nearest triangles the gradient depends on which one is
+        // found, and it must not depend on the batch.
+        let mut balls = SignBalls::default();
+        for ((p, v), g) in pts.iter().zip(values.iter_mut()).zip(gradients.iter_mut()) {
+            let near = self.tree.nearest(*p);
+            let d = near.distance2.sqrt();
+            *v = self.signed_with(*p, d, &mut balls);
+            *g = self.gradient_from(*p, &near, *v);
+        }
+    }
+
     fn gradient(&self, p: DVec3) -> DVec3 {
         let near = self.tree.nearest(p);
-        let d = near.distance2.sqrt();
-        let value = self.signed(p, d);
-        if value != 0.0 {
-            (p - near.point) / value
-        } else {
-            let [a, b, c] = self.tree.triangles()[near.slot as usize];
-            (b - a).cross(c - a).normalize_or_zero()
-        }
+        let value = self.signed(p, near.distance2.sqrt());
+        self.gradient_from(p, &near, value)
     }
 
     fn interval(&self, b: &Aabb) -> Interval {

@@ -19,10 +19,13 @@ mod platonic;
 mod request;
 mod resolve_error;
 mod resolver;
+mod sign_balls;
 mod subdivided;
 mod tree;
 mod winding;
 
+#[cfg(test)]
+mod batch_tests;
 #[cfg(test)]
 mod dual_tests;
 #[cfg(test)]

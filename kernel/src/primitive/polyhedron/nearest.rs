@@ -18,6 +18,18 @@ impl MeshTree {
     }
 }
 
+impl MeshTree {
+    /// [`MeshTree::nearest`] with the search bounded from the start by the triangle in slot
+    /// `hint` (the same distance; see [`crate::bvh::TriangleBvh::nearest_hinted`]).
+    pub(crate) fn nearest_hinted(&self, q: DVec3, hint: u32) -> Nearest {
+        self.bvh.nearest_hinted(q, hint).unwrap_or(Nearest {
+            distance2: f64::INFINITY,
+            point: q,
+            slot: 0,
+        })
+    }
+}
+
 /// The point of triangle `abc` nearest to `q` (the kernel's shared computation), for the tests.
 #[cfg(test)]
 pub(crate) fn closest_point(q: DVec3, a: DVec3, b: DVec3, c: DVec3) -> DVec3 {
