@@ -191,6 +191,15 @@ fn colours_reach_3mf_ply_and_glb_and_never_change_geometry() {
         serde_json::json!([1, 0, 0, 1])
     );
 
+    // formats without colours (and runs without a file) write none and count none
+    for ext in ["stl", "obj", "off"] {
+        assert_eq!(
+            mesh_to(&input, &p(&format!("c.{ext}")), &[])["colors"],
+            0,
+            "{ext}"
+        );
+    }
+
     // --no-colors writes what the uncoloured tree gives, byte for byte
     for ext in ["3mf", "ply", "glb", "stl"] {
         let a = p(&format!("n.{ext}"));

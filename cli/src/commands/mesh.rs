@@ -9,7 +9,7 @@ use glam::DVec3;
 use serde_json::json;
 use solidkit_kernel::Aabb;
 use solidkit_meshing::ReportOptions;
-use solidkit_meshing::io::{WriteOptions, write_colored_mesh_with};
+use solidkit_meshing::io::{MeshFormat, WriteOptions, write_colored_mesh_with};
 use solidkit_meshing::pipeline::{Domain, MeshOptions, PipelineError, Prepared, warnings};
 use solidkit_meshing::refine::RefineOptions;
 use std::time::Instant;
@@ -81,8 +81,13 @@ pub fn run(a: &MeshArgs) -> Result<u8> {
         warnings.push(w);
     }
     let (mesh, stats, fine) = (&meshed.mesh, &meshed.stats, &meshed.spec);
-    // Colours only when the tree has `color` nodes (no cost otherwise).
-    let colors = if a.no_colors {
+    // Colours only when the tree has `color` nodes and the output file can hold them (no cost
+    // otherwise: STL, OBJ and OFF files and runs without a file write none).
+    let carries = a
+        .output
+        .as_deref()
+        .is_some_and(|out| MeshFormat::from_path(out).is_ok_and(MeshFormat::carries_colors));
+    let colors = if a.no_colors || !carries {
         None
     } else {
         meshed.face_colors(&solid)

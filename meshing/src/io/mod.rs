@@ -109,6 +109,14 @@ impl MeshFormat {
             })
     }
 
+    /// Whether the writers store per-triangle colours in this format (3MF, PLY, GLB).
+    pub fn carries_colors(self) -> bool {
+        matches!(
+            self,
+            MeshFormat::Ply | MeshFormat::ThreeMf | MeshFormat::Glb
+        )
+    }
+
     /// The format of a file extension without the dot (`"stl"`, `"OBJ"`, ...), case-insensitive.
     pub fn from_extension(extension: &str) -> Option<MeshFormat> {
         let lower = extension.to_ascii_lowercase();
