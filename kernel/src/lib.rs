@@ -75,7 +75,7 @@ mod transform;
 pub mod triangulate;
 
 pub use aabb::Aabb;
-pub use color::{ColoredPart, Rgba};
+pub use color::{ColorSkeleton, ColoredPart, Rgba};
 pub use error::KernelError;
 pub use eval::Evaluator;
 pub use field::Field;

@@ -1,16 +1,17 @@
 //! Colours of parts of a tree (issue 14): [`Rgba`] (four channels in `0..=1`), parsed from
 //! OpenSCAD's and CSS's spellings — the SVG/CSS colour names (OpenSCAD's table, with
-//! `transparent`), `#rgb`, `#rgba`, `#rrggbb`, `#rrggbbaa` — and [`Solid::colored_parts`], the
-//! coloured parts of a tree for the meshing crate's per-triangle colours.
+//! `transparent`), `#rgb`, `#rgba`, `#rrggbb`, `#rrggbbaa` — and [`Solid::color_skeleton`], the
+//! coloured parts of a tree and the min/max skeleton over them, from which the meshing crate
+//! finds the part each triangle's surface comes from.
 //!
 //! A `color` node never changes geometry: it lowers to its child unchanged.
 //!
-//! [`Solid::colored_parts`]: crate::Solid::colored_parts
+//! [`Solid::color_skeleton`]: crate::Solid::color_skeleton
 
 mod names;
-mod parts;
+mod skeleton;
 
-pub use parts::ColoredPart;
+pub use skeleton::{ColorSkeleton, ColoredPart, Operand, SkeletonNode};
 
 /// A colour: red, green, blue and alpha (opacity), each in `0..=1`.
 #[derive(Debug, Clone, Copy, PartialEq)]

@@ -82,3 +82,64 @@ fn json_reads_and_writes_color_nodes() {
     let bad = crate::Solid::sphere(1.0).color(Rgba([2.0, 0.0, 0.0, 1.0]));
     assert!(bad.validate().is_err());
 }
+
+#[test]
+fn the_skeleton_pushes_negations_to_the_parts_and_merges_equal_extrema() {
+    use super::Operand::{Node, Part};
+    let ball = |x: f64| Solid::sphere(1.0).translate(DVec3::new(x, 0.0, 0.0));
+    // (a ∪ (b ∪ c)) − (d ∪ (e ∩ f)) = max(min(a, b, c), −d, min(−e, −f))
+    let tree = Solid::union_all([ball(0.0), ball(1.0).union(&ball(2.0))])
+        .color(red())
+        .difference(
+            &ball(3.0)
+                .union(&ball(4.0).intersection(&ball(5.0)).color(blue()))
+                .translate(DVec3::Z),
+        );
+    let s = tree.color_skeleton().unwrap();
+    assert_eq!(s.parts.len(), 6);
+    assert_eq!(s.root, Node(0));
+    let part = |index, negated| Part { index, negated };
+    assert!(s.nodes[0].max);
+    assert_eq!(s.nodes[0].operands, vec![Node(1), part(3, true), Node(2)]);
+    assert!(!s.nodes[1].max);
+    assert_eq!(
+        s.nodes[1].operands,
+        vec![part(0, false), part(1, false), part(2, false)]
+    );
+    assert!(!s.nodes[2].max);
+    assert_eq!(s.nodes[2].operands, vec![part(4, true), part(5, true)]);
+    // colours and transforms reach the parts
+    assert_eq!(s.parts[0].color, Some(red()));
+    assert_eq!(s.parts[3].color, None);
+    assert_eq!(s.parts[5].color, Some(blue()));
+    assert!(s.parts[5].solid.compile().value(DVec3::new(5.0, 0.0, 1.0)) < -0.99);
+    // the skeleton's value is the tree's field
+    let program = tree.compile();
+    let fields: Vec<_> = s.parts.iter().map(|p| p.solid.compile()).collect();
+    for p in [
+        DVec3::ZERO,
+        DVec3::new(3.2, 0.1, 0.9),
+        DVec3::new(4.6, 0.0, 1.0),
+    ] {
+        let v = |op: super::Operand| match op {
+            Part { index, negated } => {
+                let f = fields[index as usize].value(p);
+                if negated { -f } else { f }
+            }
+            Node(_) => unreachable!(),
+        };
+        let min = |n: usize| {
+            s.nodes[n]
+                .operands
+                .iter()
+                .map(|&o| v(o))
+                .fold(f64::INFINITY, f64::min)
+        };
+        let root = min(1).max(v(part(3, true))).max(min(2));
+        assert_eq!(root.to_bits(), program.value(p).to_bits(), "{p}");
+    }
+    // one painted part is the root itself
+    let one = Solid::sphere(1.0).color(red()).color_skeleton().unwrap();
+    assert_eq!(one.root, part(0, false));
+    assert!(one.nodes.is_empty());
+}

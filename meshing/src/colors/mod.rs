@@ -1,13 +1,24 @@
 //! Per-triangle colours from a tree's `color` nodes (issue 14), for the 3MF, PLY and GLB writers.
 //!
-//! After meshing, each triangle takes the colour of the part whose surface it lies on: among the
-//! tree's parts ([`Solid::colored_parts`]: primitives, or whole offsets, shells and smooth
-//! Booleans, in world coordinates) whose box, grown by a margin, contains the triangle's
-//! centroid, the one with the smallest `|field|` there. The colour of a part is its innermost
-//! `color` ancestor's, or none. A difference's cut faces lie on the cutter and take its colour,
-//! as in OpenSCAD's preview and its manifold backend. Parts are found through a
-//! [`TriangleBvh`] of their boxes (degenerate triangles), so thousands of parts stay fast; the
-//! triangles are coloured in parallel.
+//! After meshing, each triangle takes the colour of the operand its surface comes from, as in
+//! OpenSCAD: the tree's field at the triangle's centroid is traced from the root through the
+//! Boolean skeleton ([`Solid::color_skeleton`]): at each union, intersection or difference the
+//! operand whose value the node's minimum or maximum takes there is followed, down to a part (a
+//! primitive, or a whole offset, shell or smooth Boolean, in world coordinates), whose innermost
+//! `color` ancestor gives the colour (or none). So a difference's cut faces take the cutter's
+//! colour (OpenSCAD's preview and its manifold backend), an intersection's faces each their own
+//! operand's, and a part buried in a union or cut away never colours the surface, however near
+//! its own surface passes.
+//!
+//! **Ties** (operands with exactly equal values, e.g. coincident faces) go to the operand that
+//! comes first in the tree, with nested operations of one kind counted as one operand list
+//! (`union(union(a, b), c)` is `min(a, b, c)`; a difference's base comes before its cutters).
+//!
+//! Only the parts whose box, grown by a margin, holds the centroid are evaluated (found through
+//! a [`TriangleBvh`] of their boxes, so thousands of parts stay fast; unbounded parts always);
+//! the others count as far outside (`+∞`). Only the skeleton nodes above the evaluated parts are
+//! visited. Where no evaluated operand decides (a centroid the tree puts infinitely far), the
+//! part with the smallest `|field|` gives the colour. The triangles are coloured in parallel.
 //!
 //! Nothing is done for a tree without `color` nodes.
 
@@ -16,6 +27,9 @@ use rayon::prelude::*;
 use solidkit_kernel::bvh::TriangleBvh;
 use solidkit_kernel::program::Program;
 use solidkit_kernel::{Rgba, Solid};
+use trace::{Scratch, Tracer};
+
+mod trace;
 
 /// The colours of a mesh's triangles: a palette of distinct colours and one palette index per
 /// triangle ([`FaceColors::NONE`] for an uncoloured triangle, which writers give a default).
@@ -65,17 +79,23 @@ impl FaceColors {
 /// (OpenSCAD's default yellow, `#f9d72c`).
 pub const DEFAULT_COLOR: [u8; 4] = [0xf9, 0xd7, 0x2c, 0xff];
 
-/// One part: its field, its box grown by the margin, and its palette index.
+/// Per-thread buffers: evaluation slots, the parts found near a centroid, their values, and
+/// the trace's scratch.
+type Buffers = (Vec<f64>, Vec<usize>, Vec<(u32, f64)>, Scratch);
+
+/// One part that can be evaluated: its index in the skeleton and its field.
 struct Part {
+    index: u32,
     program: Program,
-    color: u32,
 }
 
 /// The colours of `mesh`'s triangles for the tree `solid`, or `None` when the tree has no
 /// `color` node. `margin` grows each part's box (a few grid cells: the mesh lies within a cell
-/// of the surface).
+/// of the surface); a part whose grown box misses a triangle's centroid counts as far outside
+/// there.
 pub fn assign(solid: &Solid, mesh: &IndexedMesh, margin: f64) -> Option<FaceColors> {
-    let parts = solid.colored_parts()?;
+    let tracer = Tracer::new(solid.color_skeleton()?);
+    let parts = &tracer.skeleton().parts;
     let mut palette: Vec<[u8; 4]> = Vec::new();
     let mut index_of = |c: Option<Rgba>| match c {
         None => FaceColors::NONE,
@@ -88,18 +108,20 @@ pub fn assign(solid: &Solid, mesh: &IndexedMesh, margin: f64) -> Option<FaceColo
             i as u32
         }
     };
+    let mut colors = Vec::with_capacity(parts.len());
     let mut finite = Vec::new();
     let mut boxes = Vec::new();
     let mut everywhere = Vec::new();
-    for p in &parts {
-        let part = Part {
-            program: p.solid.compile(),
-            color: index_of(p.color),
-        };
+    for (k, p) in parts.iter().enumerate() {
+        colors.push(index_of(p.color));
         let b = p.solid.bbox();
         if b.is_empty() {
-            continue;
+            continue; // never evaluated: far outside everywhere
         }
+        let part = Part {
+            index: k as u32,
+            program: p.solid.compile(),
+        };
         if b.min.is_finite() && b.max.is_finite() {
             let (lo, hi) = (b.min - margin, b.max + margin);
             boxes.push([lo, hi, hi]);
@@ -113,8 +135,8 @@ pub fn assign(solid: &Solid, mesh: &IndexedMesh, margin: f64) -> Option<FaceColo
         .triangles
         .par_iter()
         .map_init(
-            || (Vec::new(), Vec::new()),
-            |(slots, hits): &mut (Vec<f64>, Vec<usize>), t| {
+            || (Vec::new(), Vec::new(), Vec::new(), Scratch::default()),
+            |(slots, hits, values, scratch): &mut Buffers, t| {
                 let c = t
                     .iter()
                     .map(|&i| mesh.positions[i as usize])
@@ -124,17 +146,21 @@ pub fn assign(solid: &Solid, mesh: &IndexedMesh, margin: f64) -> Option<FaceColo
                 if let Some(bvh) = &bvh {
                     bvh.for_each_overlap(c, c, |slot| hits.push(bvh.slot_index(slot) as usize));
                 }
-                // Ties go to the first candidate (bounded parts in tree order, then unbounded
-                // ones), for any thread count.
                 hits.sort_unstable();
-                let mut best = (f64::INFINITY, FaceColors::NONE);
+                values.clear();
                 for part in hits.iter().map(|&k| &finite[k]).chain(&everywhere) {
-                    let d = part.program.value_with(c, slots).abs();
-                    if d < best.0 {
-                        best = (d, part.color);
-                    }
+                    values.push((part.index, part.program.value_with(c, slots)));
                 }
-                best.1
+                match tracer.trace(values, scratch) {
+                    Some(k) => colors[k as usize],
+                    // no operand decides (the centroid is far from every surface): the part
+                    // with the smallest |field|, the first of equals
+                    None => values
+                        .iter()
+                        .filter(|v| !v.1.is_nan())
+                        .min_by(|a, b| a.1.abs().total_cmp(&b.1.abs()).then(a.0.cmp(&b.0)))
+                        .map_or(FaceColors::NONE, |v| colors[v.0 as usize]),
+                }
             },
         )
         .collect();
@@ -143,6 +169,8 @@ pub fn assign(solid: &Solid, mesh: &IndexedMesh, margin: f64) -> Option<FaceColo
 
 #[cfg(test)]
 pub(crate) mod tests;
+#[cfg(test)]
+mod tests_rule;
 
 impl crate::pipeline::Meshed {
     /// The colours of this mesh's triangles for the tree it was meshed from (see [`assign`]),
