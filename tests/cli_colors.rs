@@ -238,3 +238,46 @@ fn unknown_colour_names_warn_and_json_trees_carry_colours() {
     let colors = threemf_colors(&std::fs::read(&out).unwrap());
     assert!(colors.iter().all(|&c| c == [0, 0, 255, 128]));
 }
+
+/// A pocket cut into a red cube, its floor exactly the top of a green box buried in the cube:
+/// the floor and walls are the cutter's blue (the operand the surface comes from), the cube's
+/// top red. The rule these replaced, the part with the smallest |field|, gave the whole floor
+/// the buried green box's colour (an exact tie it gave to the first part).
+#[test]
+fn cut_faces_are_the_cutters_even_where_a_buried_part_touches_them() {
+    let dir = tempfile::tempdir().unwrap();
+    let input = dir.path().join("pocket.csg");
+    std::fs::write(
+        &input,
+        "difference() {\n\tunion() {\n\t\tcolor(\"red\") cube(size = [10, 10, 10], center = true);\n\
+         \t\tcolor(\"lime\") multmatrix([[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 1.5], [0, 0, 0, 1]]) \
+         cube(size = [4, 4, 3], center = true);\n\t}\n\
+         \tcolor(\"blue\") multmatrix([[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 4.5], [0, 0, 0, 1]]) \
+         cube(size = [4, 4, 3], center = true);\n}\n",
+    )
+    .unwrap();
+    let out = dir.path().join("pocket.ply");
+    // red and blue: the buried green box colours nothing
+    assert_eq!(mesh_to(&input, &out, &[])["colors"], 2);
+    let (mesh, colors) = ply_colors(&std::fs::read(&out).unwrap());
+    let mut counts = [0; 3];
+    for (t, tri) in mesh.triangles.iter().enumerate() {
+        let c = tri
+            .iter()
+            .map(|&i| mesh.positions[i as usize])
+            .sum::<DVec3>()
+            / 3.0;
+        let m = c.x.abs().max(c.y.abs());
+        if (c.z - 3.0).abs() < 1e-3 && m < 1.8 {
+            assert_eq!(colors[t], [0, 0, 255, 255], "floor at {c}");
+            counts[0] += 1;
+        } else if (m - 2.0).abs() < 1e-3 && c.z > 3.2 && c.z < 4.8 {
+            assert_eq!(colors[t], [0, 0, 255, 255], "wall at {c}");
+            counts[1] += 1;
+        } else if (c.z - 5.0).abs() < 1e-3 && m > 2.2 {
+            assert_eq!(colors[t], [255, 0, 0, 255], "top at {c}");
+            counts[2] += 1;
+        }
+    }
+    assert!(counts.iter().all(|&n| n > 200), "{counts:?}");
+}

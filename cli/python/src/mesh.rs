@@ -254,8 +254,8 @@ impl PyMesh {
     }
 
     /// Writes the mesh; the format follows the extension (.stl, .obj, .ply, .off, .3mf, .glb).
-    /// 3MF, PLY and GLB carry `face_colors` when there are any (`colors=False`: none). The file
-    /// is replaced atomically.
+    /// 3MF, PLY, GLB and OFF carry `face_colors` when there are any (`colors=False`: none). The
+    /// file is replaced atomically.
     #[pyo3(signature = (path, *, colors = true))]
     fn save(&self, py: Python<'_>, path: PathBuf, colors: bool) -> PyResult<()> {
         let c = self.colors.as_ref().filter(|_| colors);

@@ -316,7 +316,7 @@ impl PySolid {
 
     /// Painted: `color` a CSS/SVG name, `"#rrggbb[aa]"` or 3 or 4 numbers in 0..1; `alpha`
     /// replaces the alpha of a name or of 3 numbers. Geometry is unchanged; the innermost colour
-    /// wins, and `Mesh.face_colors` and `Mesh.save` (3MF, PLY, GLB) carry it.
+    /// wins, and `Mesh.face_colors` and `Mesh.save` (3MF, PLY, GLB, OFF) carry it.
     #[pyo3(signature = (color, alpha = None))]
     fn color(&self, color: &Bound<'_, PyAny>, alpha: Option<f64>) -> PyResult<PySolid> {
         use solidkit_kernel::Rgba;

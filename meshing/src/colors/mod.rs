@@ -1,4 +1,5 @@
-//! Per-triangle colours from a tree's `color` nodes (issue 14), for the 3MF, PLY and GLB writers.
+//! Per-triangle colours from a tree's `color` nodes (issue 14), for the 3MF, PLY, GLB and OFF
+//! writers.
 //!
 //! After meshing, each triangle takes the colour of the operand its surface comes from, as in
 //! OpenSCAD: the tree's field at the triangle's centroid is traced from the root through the

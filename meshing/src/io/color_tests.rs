@@ -176,3 +176,53 @@ fn one_colour_is_an_object_property_and_uncoloured_triangles_get_the_default() {
     let (_, glb) = glb_colors(&bytes(&tri, Some(&half), MeshFormat::Glb, Encoding::Binary));
     assert_eq!(glb.iter().filter(|c| c.is_none()).count(), 1);
 }
+
+#[test]
+fn off_carries_a_colour_after_each_faces_indices() {
+    let solid = cube_minus_sphere();
+    let m = meshed(&solid);
+    let c = m.face_colors(&solid).unwrap();
+    let mesh = &m.mesh;
+    let off = bytes(mesh, Some(&c), MeshFormat::Off, Encoding::Ascii);
+    let text = std::str::from_utf8(&off).unwrap();
+    // after "OFF", the comment, the counts and the vertices: "3 i j k r g b a" per face
+    let faces: Vec<Vec<u32>> = text
+        .lines()
+        .skip(3 + mesh.positions.len())
+        .map(|l| l.split(' ').map(|w| w.parse().unwrap()).collect())
+        .collect();
+    assert_eq!(faces.len(), mesh.triangles.len());
+    for (f, t) in faces.iter().zip(&mesh.triangles) {
+        assert_eq!(f.len(), 8);
+        assert_eq!(f[..4], [3, t[0], t[1], t[2]]);
+    }
+    check_cube_minus_sphere(mesh, |t| {
+        faces[t][4..]
+            .iter()
+            .map(|&x| x as u8)
+            .collect::<Vec<_>>()
+            .try_into()
+            .unwrap()
+    });
+    // the reader skips the colours: the same mesh, exactly
+    let back = read_mesh_bytes(&off, MeshFormat::Off, "m").unwrap();
+    assert_eq!(back.positions, mesh.positions);
+    assert_eq!(back.triangles, mesh.triangles);
+    // uncoloured triangles get the default; no colours: the plain file
+    let none = FaceColors {
+        palette: vec![],
+        faces: vec![FaceColors::NONE; mesh.triangles.len()],
+    };
+    let off = bytes(mesh, Some(&none), MeshFormat::Off, Encoding::Ascii);
+    let [r, g, b, a] = DEFAULT_COLOR;
+    let last = std::str::from_utf8(&off)
+        .unwrap()
+        .lines()
+        .last()
+        .unwrap()
+        .to_string();
+    assert!(last.ends_with(&format!(" {r} {g} {b} {a}")), "{last}");
+    let mut plain = Vec::new();
+    encode(&mut plain, mesh, MeshFormat::Off, Encoding::Ascii).unwrap();
+    assert_eq!(plain, bytes(mesh, None, MeshFormat::Off, Encoding::Ascii));
+}

@@ -216,8 +216,8 @@ pub fn write_mesh_with(
 }
 
 /// Writes a mesh with per-triangle colours as [`write_mesh_with`] does: 3MF (`<basematerials>`),
-/// PLY (face `red green blue alpha`) and GLB (one primitive and material per colour) carry them;
-/// STL, OBJ and OFF are written without. `colors: None` writes exactly what
+/// PLY (face `red green blue alpha`), GLB (one primitive and material per colour) and OFF
+/// (`3 i j k r g b a` per face, 0..=255) carry them; STL and OBJ are written without. `colors: None` writes exactly what
 /// [`write_mesh_with`] writes.
 pub fn write_colored_mesh_with(
     path: &Path,
@@ -261,7 +261,8 @@ pub(crate) fn encode_colored(
         (MeshFormat::Obj, _) => obj::write(out, mesh),
         (MeshFormat::Ply, Some(c)) => ply_colors::write(out, mesh, c, encoding),
         (MeshFormat::Ply, None) => ply::write(out, mesh, encoding),
-        (MeshFormat::Off, _) => off::write(out, mesh),
+        (MeshFormat::Off, Some(c)) => off::write_colored(out, mesh, c),
+        (MeshFormat::Off, None) => off::write(out, mesh),
         (MeshFormat::ThreeMf, c) => threemf::write(out, mesh, c),
         (MeshFormat::Glb, c) => glb::write(out, mesh, c),
     }

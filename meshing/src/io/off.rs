@@ -3,7 +3,8 @@
 //! Layout: an `OFF` header line (also `COFF`, `NOFF`, `STOFF`... whose extra per-vertex values
 //! are ignored), a `VERTICES FACES EDGES` counts line (possibly on the header line), one vertex
 //! per line (`x y z`, extra values ignored), one face per line (`n i0 ... i(n-1)`, 0-based,
-//! optional color values after the indices ignored). `#` starts a comment anywhere; blank lines
+//! optional color values after the indices ignored; written by [`write_colored`] for a coloured
+//! mesh). `#` starts a comment anywhere; blank lines
 //! are skipped. Polygonal faces are triangulated by [`super::triangulate_polygon`] (or kept as
 //! polygons by [`read_faces`] with a polygon sink).
 
@@ -16,6 +17,7 @@ use super::faces::FaceSink;
 use super::text::{capped_capacity, lines, parse_coordinate, parse_i64, show, words};
 use super::{Location, MeshIoError};
 use crate::IndexedMesh;
+use crate::colors::{DEFAULT_COLOR, FaceColors};
 
 /// A line with content: its number and its words, comments removed.
 type ContentLine<'a> = (usize, Vec<&'a [u8]>);
@@ -182,8 +184,41 @@ pub(super) fn write(out: &mut dyn Write, mesh: &IndexedMesh) -> io::Result<()> {
     write_faces(out, &mesh.positions, &mesh.triangles)
 }
 
+/// Writes OFF with a colour after each face's indices: `3 i j k r g b a`, channels 0..=255
+/// (MeshLab's and Geomview's integer form; uncoloured triangles get [`DEFAULT_COLOR`]).
+pub(super) fn write_colored(
+    out: &mut dyn Write,
+    mesh: &IndexedMesh,
+    colors: &FaceColors,
+) -> io::Result<()> {
+    write_header(out, &mesh.positions, &mesh.triangles)?;
+    for (t, [a, b, c]) in mesh.triangles.iter().enumerate() {
+        let [r, g, bl, al] = colors.color_or(t, DEFAULT_COLOR);
+        writeln!(out, "3 {a} {b} {c} {r} {g} {bl} {al}")?;
+    }
+    Ok(())
+}
+
 /// Writes OFF with faces of any size.
 pub(super) fn write_faces<F: AsRef<[u32]>>(
+    out: &mut dyn Write,
+    positions: &[DVec3],
+    faces: &[F],
+) -> io::Result<()> {
+    write_header(out, positions, faces)?;
+    for face in faces {
+        let face = face.as_ref();
+        write!(out, "{}", face.len())?;
+        for i in face {
+            write!(out, " {i}")?;
+        }
+        writeln!(out)?;
+    }
+    Ok(())
+}
+
+/// Writes the header, the counts and the vertices.
+fn write_header<F: AsRef<[u32]>>(
     out: &mut dyn Write,
     positions: &[DVec3],
     faces: &[F],
@@ -199,14 +234,6 @@ pub(super) fn write_faces<F: AsRef<[u32]>>(
     )?;
     for p in positions {
         writeln!(out, "{} {} {}", p.x, p.y, p.z)?;
-    }
-    for face in faces {
-        let face = face.as_ref();
-        write!(out, "{}", face.len())?;
-        for i in face {
-            write!(out, " {i}")?;
-        }
-        writeln!(out)?;
     }
     Ok(())
 }

@@ -128,7 +128,7 @@ class Mesh:
         """The topology report with the keys of ``solidkit mesh --json``."""
     def save(self, path: Path, *, colors: bool = True) -> None:
         """Writes the mesh (.stl, .obj, .ply, .off, .3mf, .glb by extension), atomically;
-        3MF, PLY and GLB carry ``face_colors`` unless ``colors=False``."""
+        3MF, PLY, GLB and OFF carry ``face_colors`` unless ``colors=False``."""
     def to_trimesh(self) -> Any:
         """A ``trimesh.Trimesh`` with the same arrays."""
     def to_manifold(self) -> Any:
