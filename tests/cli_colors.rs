@@ -192,13 +192,27 @@ fn colours_reach_3mf_ply_and_glb_and_never_change_geometry() {
     );
 
     // formats without colours (and runs without a file) write none and count none
-    for ext in ["stl", "obj", "off"] {
+    for ext in ["stl", "obj"] {
         assert_eq!(
             mesh_to(&input, &p(&format!("c.{ext}")), &[])["colors"],
             0,
             "{ext}"
         );
     }
+    // OFF carries a colour after each face's indices (as MeshLab writes it)
+    assert_eq!(mesh_to(&input, &p("c.off"), &[])["colors"], 3);
+    let off = std::fs::read_to_string(p("c.off")).unwrap();
+    let face_rows: Vec<&str> = off.lines().filter(|l| l.starts_with("3 ")).collect();
+    assert_eq!(face_rows.len(), mesh.triangles.len());
+    assert!(face_rows.iter().all(|l| l.split_whitespace().count() == 8));
+    assert!(
+        face_rows.iter().any(|l| l.ends_with(" 255 0 0 255")),
+        "red faces"
+    );
+    assert!(
+        face_rows.iter().any(|l| l.ends_with(" 0 0 255 255")),
+        "blue faces"
+    );
 
     // --no-colors writes what the uncoloured tree gives, byte for byte
     for ext in ["3mf", "ply", "glb", "stl"] {

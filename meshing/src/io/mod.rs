@@ -109,11 +109,11 @@ impl MeshFormat {
             })
     }
 
-    /// Whether the writers store per-triangle colours in this format (3MF, PLY, GLB).
+    /// Whether the writers store per-triangle colours in this format (3MF, PLY, GLB, OFF).
     pub fn carries_colors(self) -> bool {
         matches!(
             self,
-            MeshFormat::Ply | MeshFormat::ThreeMf | MeshFormat::Glb
+            MeshFormat::Ply | MeshFormat::ThreeMf | MeshFormat::Glb | MeshFormat::Off
         )
     }
 
