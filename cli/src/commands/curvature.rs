@@ -102,6 +102,21 @@ pub fn run(a: &CurvatureArgs) -> Result<u8> {
     Ok(0)
 }
 
+/// A vertex's curvatures from the kernel's `K` and `H` (`H` positive towards `p_u × p_v`; the mesh
+/// convention is the opposite), the principal curvatures `H ± √(H² − K)`.
+pub(crate) fn vertex_curvature(gaussian: f64, kernel_mean: f64) -> VertexCurvature {
+    let mean = -kernel_mean;
+    let r = (mean * mean - gaussian).max(0.0).sqrt();
+    VertexCurvature {
+        gaussian,
+        mean,
+        k1: mean + r,
+        k2: mean - r,
+        boundary: false,
+        area: 0.0,
+    }
+}
+
 /// The regular grid of a surface node (points that coincide welded, so a closed surface such as
 /// a formula torus has no seam), its exact curvatures per vertex and, where the sheet is a graph
 /// `z = h(x, y)` (its projection onto `xy` regular at every vertex, one orientation), `Δh`.
@@ -132,17 +147,7 @@ fn parametric(spec: &SurfaceSpec) -> Result<Parametric> {
                 _ => graph = false,
             }
             let c = d.curvature();
-            // The kernel's H is positive towards p_u × p_v; the mesh convention is the opposite.
-            let mean = -c.mean;
-            let r = (mean * mean - c.gaussian).max(0.0).sqrt();
-            values.push(VertexCurvature {
-                gaussian: c.gaussian,
-                mean,
-                k1: mean + r,
-                k2: mean - r,
-                boundary: false,
-                area: 0.0,
-            });
+            values.push(vertex_curvature(c.gaussian, c.mean));
         }
     }
     let (mesh, values, lap) = weld(mesh, values, lap);

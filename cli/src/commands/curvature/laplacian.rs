@@ -45,16 +45,7 @@ pub fn height_field(
     for p in &mesh.positions {
         let d = hf.derivatives(p.x, p.y);
         let c = monge_curvature(&d);
-        let mean = -c.mean;
-        let r = (mean * mean - c.gaussian).max(0.0).sqrt();
-        values.push(VertexCurvature {
-            gaussian: c.gaussian,
-            mean,
-            k1: mean + r,
-            k2: mean - r,
-            boundary: false,
-            area: 0.0,
-        });
+        values.push(super::vertex_curvature(c.gaussian, c.mean));
         laplacian.push(d.hxx + d.hyy);
     }
     Ok((mesh, values, laplacian))
