@@ -24,13 +24,10 @@ FIXTURES = paths.ROOT / "fixtures" / "lattice"
 FIXTURE_RESOLUTIONS = range(48, 65)
 
 # solidkit bugs the property test found, each reduced to a fixture: strict expected failures
-# until fixed (a fixed one fails as XPASS: remove its entry).
-PINCH = ("solids touching only along an edge that lies between sample points are joined by "
-         "marching cubes' face decider (manifold3d keeps a pinch as separate shells; on sample "
-         "points solidkit's zero rule does too, fixtures/lattice/edge_contact_on_grid.json)")
-KNOWN_BUGS = {
-    "edge_contact_off_grid": f"{PINCH}: boxes sharing an edge, 1 shell at most resolutions 48-64",
-}
+# until fixed (a fixed one fails as XPASS: remove its entry). None is open: the edge contacts
+# (edge_contact_*.json: solids touching along an edge on a sample line, on a sample plane, or
+# between samples) are kept apart by the zero rule and the pinch check.
+KNOWN_BUGS: dict = {}
 
 
 def _describe(entries: list) -> str:
@@ -59,7 +56,6 @@ def test_lattice_trees_agree_with_manifold3d(lattice_run):
                                f"manifold3d:\n" + _describe(r["failures"]))
 
 
-@pytest.mark.xfail(strict=True, reason=f"known solidkit bug, fixtures/lattice/edge_contact_off_grid.json: {PINCH}")
 def test_lattice_pinches_stay_apart(lattice_run):
     """The trees whose only disagreement is shells joined where manifold3d's shells touch (gap 0)."""
     r = lattice_run

@@ -125,6 +125,14 @@ pub trait Evaluator: Clone + Send + Sync {
     /// [`Interval::entire`].
     fn interval_with(&self, b: &Aabb, s: &mut Self::IntervalScratch) -> Interval;
 
+    /// Whether the last [`Evaluator::interval_with`] on `s` left a choice between operands (a
+    /// min, max or blend) that either can win over its box; true when the evaluator cannot tell.
+    /// Where it is false, no contact or crease between operands crosses the box.
+    fn contested(&self, s: &Self::IntervalScratch) -> bool {
+        let _ = s;
+        true
+    }
+
     /// A shorter evaluator valid in the box of the last [`Evaluator::interval_with`] on `s` (the
     /// same values, bit for bit, everywhere in that box), or `None` when nothing can be dropped.
     fn prune(&self, s: &mut Self::IntervalScratch) -> Option<Self>;

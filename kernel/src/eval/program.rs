@@ -46,6 +46,11 @@ impl Evaluator for Program {
     }
 
     #[inline]
+    fn contested(&self, s: &IntervalScratch) -> bool {
+        Program::contested(self, s)
+    }
+
+    #[inline]
     fn prune(&self, s: &mut IntervalScratch) -> Option<Program> {
         Program::prune(self, s)
     }

@@ -31,6 +31,16 @@ pub struct IntervalScratch {
     scale: f64,
     /// True when the last evaluation found a branch that cannot win.
     prunable: bool,
+    /// True when the last evaluation found a choice that either operand can win while both may
+    /// cross zero (where two pieces of the solid, or of its outside, touch at a point, both
+    /// operands of the choice that joins them are zero there), or any such choice when the
+    /// program shifts levels.
+    contested: bool,
+    /// Any choice that either operand can win.
+    any_both: bool,
+    /// The program moves levels after a choice (offsets, shells, blends), so the sides of a
+    /// choice's operands are not the solid's.
+    shifts: bool,
     live: Vec<bool>,
     map: Vec<u32>,
 }
@@ -44,6 +54,9 @@ impl Program {
         s.choices.resize(n, Choice::Both);
         s.scale = box_scale(b);
         s.prunable = false;
+        s.contested = false;
+        s.any_both = false;
+        s.shifts = false;
         for (i, ins) in self.instrs.iter().enumerate() {
             let v = match *ins {
                 Instr::Leaf { prim, frame } => {
@@ -59,12 +72,18 @@ impl Program {
                     let (x, y) = (s.slots[a as usize], s.slots[c as usize]);
                     s.choices[i] = choose(x, y, s.scale, true);
                     s.prunable |= s.choices[i] != Choice::Both;
+                    let both = s.choices[i] == Choice::Both;
+                    s.any_both |= both;
+                    s.contested |= both && x.contains(0.0) && y.contains(0.0);
                     x.min(y)
                 }
                 Instr::Max(a, c) => {
                     let (x, y) = (s.slots[a as usize], s.slots[c as usize]);
                     s.choices[i] = choose(x, y, s.scale, false);
                     s.prunable |= s.choices[i] != Choice::Both;
+                    let both = s.choices[i] == Choice::Both;
+                    s.any_both |= both;
+                    s.contested |= both && x.contains(0.0) && y.contains(0.0);
                     x.max(y)
                 }
                 Instr::Neg(a) => -s.slots[a as usize],
@@ -80,11 +99,17 @@ impl Program {
                         },
                     };
                     s.prunable |= s.choices[i] != Choice::Both;
+                    s.any_both |= s.choices[i] == Choice::Both;
+                    s.shifts = true;
                     let m = x.min(y);
                     Interval::new(m.lo - 0.25 * r, m.hi)
                 }
-                Instr::Abs(a) => s.slots[a as usize].abs(),
+                Instr::Abs(a) => {
+                    s.shifts = true;
+                    s.slots[a as usize].abs()
+                }
                 Instr::AddConst(a, k) => {
+                    s.shifts = true;
                     let x = s.slots[a as usize];
                     Interval::new(x.lo + k.get(), x.hi + k.get())
                 }
@@ -93,6 +118,15 @@ impl Program {
             s.slots[i] = v;
         }
         s.slots[n - 1]
+    }
+
+    /// Whether the last [`Program::interval_with`] on `s` left a choice (min, max) that either
+    /// operand can win while both may be zero in the box (any choice either can win when the
+    /// program has offsets, shells or blends, which move the level that matters). Two pieces of
+    /// the solid, or of its outside, that touch at a point meet where both operands of the
+    /// choice between them are zero; where there is no such choice, none meet in the box.
+    pub fn contested(&self, s: &IntervalScratch) -> bool {
+        s.contested || (s.shifts && s.any_both)
     }
 
     /// Interval of the field over `b`.

@@ -15,7 +15,8 @@ use super::patches::{Config, NO_PATCH, Separator, face_edges, patch_table, reach
 use super::qef::Qef;
 use crate::grid::GridSpec;
 use crate::marching_cubes::inside;
-use crate::marching_cubes::table::{cell_config, edge_origin};
+use crate::marching_cubes::pinch::{FaceRule, Pinch, PinchScratch};
+use crate::marching_cubes::table::{case_table, edge_origin};
 use crate::octree::{ClockFn, now};
 use glam::DVec3;
 use solidkit_kernel::Evaluator;
@@ -76,8 +77,9 @@ pub(crate) struct Block {
     pub evaluation_s: f64,
     /// Thin and hidden features in the block (sparse path only).
     pub thin: crate::octree::ThinCounts,
-    /// Cells whose configuration the decider should never give (their patches may lack
-    /// separating planes): the run then claims nothing ([`super::certify::claim`]).
+    /// Cells whose configuration the decider alone never gives, which a separated pinch can
+    /// (their patches may lack separating planes): the run then claims nothing
+    /// ([`super::claim::claim`]).
     pub unreachable: usize,
 }
 
@@ -104,6 +106,8 @@ pub(crate) struct BlockScratch<S, I> {
     pub field: S,
     /// Interval buffers of the per-group pruning (long programs only).
     interval: I,
+    /// Scratch of the pinch check.
+    pinch: PinchScratch<I>,
     /// Times the crossing search, when the caller gave a clock.
     clock: Option<ClockFn>,
 }
@@ -118,10 +122,12 @@ impl<S: Default, I: Default> BlockScratch<S, I> {
     }
 }
 
-/// Builds a block from its samples (`extent + 1` per axis, x fastest).
+/// Builds a block from its samples (`extent + 1` per axis, x fastest); `field` is the program
+/// pruned for the block, `root` the full one (for the pinch check, [`crate::marching_cubes::pinch`]).
 #[allow(clippy::too_many_arguments)]
 pub(crate) fn build<F: Evaluator>(
     field: &F,
+    root: &F,
     spec: &GridSpec,
     min: [usize; 3],
     extent: [usize; 3],
@@ -207,6 +213,11 @@ pub(crate) fn build<F: Evaluator>(
     };
     let corner = [0, 1, nx, nx + 1, nxy, nxy + 1, nxy + nx, nxy + nx + 1];
     let half = 0.5 * spec.cell;
+    let mc = case_table();
+    let rule = Pinch {
+        program: root,
+        spec,
+    };
     let mut face_keys: Vec<u16> = Vec::new();
     for k in 0..e[2] {
         for j in 0..e[1] {
@@ -222,10 +233,14 @@ pub(crate) fn build<F: Evaluator>(
                     continue;
                 }
                 // The marching-cubes configuration, decided on the same f32 samples.
-                let config =
-                    cell_config(usize::from(mask), |c| values[base + corner[c as usize]]) as Config;
+                let cell = [min[0] + i, min[1] + j, min[2] + k];
+                let config = mc.cell_config_with(
+                    usize::from(mask),
+                    |c| values[base + corner[c as usize]],
+                    |bit, corners, zeros| rule.joined(cell, bit, corners, zeros, &mut s.pinch),
+                ) as Config;
                 if !reachable(config) {
-                    debug_assert!(false, "the decider never gives {config:#x}");
+                    // Only a pinch check can give it (a separated face of a checkerboard cell).
                     b.unreachable += 1;
                 }
                 b.configs[ci] = config;

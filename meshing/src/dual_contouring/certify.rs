@@ -35,7 +35,8 @@
 //!   ([`super::patches::Patches::separators`]), so their cones cannot meet. Every configuration
 //!   the decider can give has such planes; the only ones without (two interlocked patches)
 //!   would need one pair of opposite faces joined and another separated, which the decider
-//!   never gives ([`super::patches::reachable`]).
+//!   never gives ([`super::patches::reachable`]); the pinch check
+//!   ([`crate::marching_cubes::pinch`]) can, and a run with such a cell claims nothing.
 //! - A single patch whose loop winds around the cell through joined faces (marching cubes fans
 //!   it from a centre vertex) is no different: its cones share one apex, and cones from one
 //!   apex strictly inside the cell over disjoint zones are disjoint whatever the loop's shape.

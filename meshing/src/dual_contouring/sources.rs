@@ -64,6 +64,7 @@ pub(crate) fn sparse_blocks<E: Evaluator>(
                     values.sample(leaf.program.as_ref(), program, spec, leaf.min, n, batch);
                 let mut b = build(
                     leaf.program.as_ref(),
+                    program,
                     spec,
                     leaf.min,
                     e,
@@ -123,7 +124,7 @@ pub(crate) fn dense_blocks<F: Evaluator>(
                     }
                 }
             }
-            build(field, spec, min, e, block, &values, keep, scratch)
+            build(field, field, spec, min, e, block, &values, keep, scratch)
         })
         .filter(|b| !b.vertices.is_empty() || !b.edges.is_empty())
         .collect()

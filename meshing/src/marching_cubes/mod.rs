@@ -2,11 +2,14 @@
 //! grid, for every sign pattern.
 //!
 //! [`table`] generates the case table from a face rule that neighbouring cells agree on;
+//! [`pinch`] confirms the faces its decider joins with the program, so solids touching along a
+//! line stay apart;
 //! [`samples`] samples a field in parallel over a [`GridSpec`]; [`polygonize`] turns samples into triangles with vertices
 //! shared by construction. [`mesh_field`] runs the whole path. [`disjoint`] says why the triangles never
 //! intersect and what a run checks to claim it.
 
 pub mod disjoint;
+pub mod pinch;
 pub mod polygonize;
 pub mod samples;
 pub mod sign;

@@ -8,6 +8,7 @@
 //! positions interpolate linearly along the edge, kept at least [`EDGE_MARGIN`] of the edge away
 //! from either end, so no two vertices coincide and no triangle is degenerate.
 
+use super::pinch::{Decider, FaceRule};
 use super::samples::SampleGrid;
 use super::sign::inside;
 use super::table::{CENTRE, NO_CENTRE, case_table, edge_origin};
@@ -104,8 +105,9 @@ const CENTRE_FLAG: u32 = 1 << 31;
 
 /// Triangles of cell layer `k` (between slices `k` and `k + 1`) in global vertex numbers, centre
 /// vertices as `CENTRE_FLAG | n` with their positions in the second list.
-fn layer_triangles(
+fn layer_triangles<R: FaceRule>(
     g: &SampleGrid,
+    rule: &R,
     k: usize,
     slices: &[SliceVertices],
     offsets: &[u32],
@@ -115,6 +117,7 @@ fn layer_triangles(
     let sx = cx + 1;
     let mut out = Vec::new();
     let mut centres = Vec::new();
+    let mut scratch = R::Scratch::default();
     for j in 0..cy {
         for i in 0..cx {
             let mut mask = 0usize;
@@ -124,10 +127,14 @@ fn layer_triangles(
                     mask |= 1 << c;
                 }
             }
-            let config = table.cell_config(mask, |c| {
-                let c = usize::from(c);
-                g.at(i + (c & 1), j + (c >> 1 & 1), k + (c >> 2 & 1))
-            });
+            let config = table.cell_config_with(
+                mask,
+                |c| {
+                    let c = usize::from(c);
+                    g.at(i + (c & 1), j + (c >> 1 & 1), k + (c >> 2 & 1))
+                },
+                |bit, corners, zeros| rule.joined([i, j, k], bit, corners, zeros, &mut scratch),
+            );
             let vertex = |e: u8| {
                 let (axis, o) = edge_origin(e);
                 let slice = k + o[2];
@@ -160,6 +167,11 @@ fn layer_triangles(
 /// Polygonizes the zero level set of the samples into `sink`. Deterministic: the output does not
 /// depend on the number of threads.
 pub fn polygonize_into(g: &SampleGrid, sink: &mut impl MeshSink) {
+    polygonize_with(g, &Decider, sink);
+}
+
+/// [`polygonize_into`] with the faces the decider joins confirmed by `rule` ([`super::pinch`]).
+pub fn polygonize_with(g: &SampleGrid, rule: &impl FaceRule, sink: &mut impl MeshSink) {
     let [_, _, sz] = g.spec.samples();
     let slices: Vec<SliceVertices> = (0..sz)
         .into_par_iter()
@@ -173,7 +185,7 @@ pub fn polygonize_into(g: &SampleGrid, sink: &mut impl MeshSink) {
     }
     let layers: Vec<(Vec<[u32; 3]>, Vec<DVec3>)> = (0..g.spec.cells[2])
         .into_par_iter()
-        .map(|k| layer_triangles(g, k, &slices, &offsets))
+        .map(|k| layer_triangles(g, rule, k, &slices, &offsets))
         .collect();
     let triangles: usize = layers.iter().map(|l| l.0.len()).sum();
     let centres: usize = layers.iter().map(|l| l.1.len()).sum();

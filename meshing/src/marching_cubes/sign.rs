@@ -12,8 +12,9 @@
 //!    the two fields decreases along the step), and the samples on a flush cutter's face are
 //!    outside the difference (one of the two fields increases).
 //! 3. An exact zero on a surface no other operand touches (a box face lying on a sample plane)
-//!    is inside exactly when one of its six lattice neighbours is strictly inside
-//!    ([`lone_inside`], applied after a box is sampled by [`resolve_lone`]). Faces on sample
+//!    is inside exactly when one of its six lattice neighbours is strictly inside and it does not
+//!    close a pinch edge with a lower neighbour ([`lone_inside`], applied after a box is sampled
+//!    by [`resolve_lone`]). Faces on sample
 //!    planes then keep their samples, and their edges are not bevelled by a cell (counting
 //!    every such zero outside loses 0.59 cell of area per unit of edge length: 3% of two unit
 //!    boxes at 60 cells), while a zero that would be an island (the vertex sample of a sharp
@@ -99,19 +100,62 @@ pub fn settle_field(field: &impl Field, x: f32, y: f32, z: f32, v: f32) -> f32 {
 
 /// Whether the lone zero at grid sample `s` is inside: one of its six lattice neighbours in a
 /// grid of `samples` points per axis has a value (noise snapped) below zero and not itself a
-/// zero. `value` gives a neighbour's value, settled or not.
+/// zero, and it is not the upper end of a *pinch edge*. `value` gives any grid sample's value,
+/// settled or not.
+///
+/// A pinch edge joins two zero samples whose strictly inside neighbours lie on opposite sides
+/// across some other axis and on no common side: the edge lies in the surface of two solids that
+/// touch only along a line crossing it (boxes sharing an edge that lies on a sample plane). Both
+/// ends inside would join the two solids along the edge; its upper end (along the edge's axis)
+/// goes outside instead, so the solids stay apart as exact Boolean kernels keep them (a bevel of
+/// one sample row at the contact). The rule reads the samples within two lattice steps only.
 pub fn lone_inside(
     s: [usize; 3],
     samples: [usize; 3],
     mut value: impl FnMut([usize; 3]) -> f32,
 ) -> bool {
-    (0..3).any(|a| {
-        [s[a].wrapping_sub(1), s[a] + 1].into_iter().any(|t| {
+    let own = inside_sides(s, samples, &mut value);
+    if own == 0 {
+        return false;
+    }
+    // The lower neighbours along each axis: a zero there with opposite inside sides.
+    !(0..3).any(|b| {
+        if s[b] == 0 {
+            return false;
+        }
+        let mut t = s;
+        t[b] -= 1;
+        if value(t).abs() > f32::MIN_POSITIVE {
+            // Not a zero (NaN included).
+            return false;
+        }
+        let other = inside_sides(t, samples, &mut value);
+        own & other == 0
+            && (0..3).filter(|&a| a != b).any(|a| {
+                let (lo, hi) = (1u8 << (2 * a), 2u8 << (2 * a));
+                (own & lo != 0 && other & hi != 0) || (own & hi != 0 && other & lo != 0)
+            })
+    })
+}
+
+/// The sides of grid sample `s` (bit `2·axis` below, `2·axis + 1` above) whose lattice neighbour
+/// is strictly inside: a value below zero and not itself a zero.
+fn inside_sides(
+    s: [usize; 3],
+    samples: [usize; 3],
+    value: &mut impl FnMut([usize; 3]) -> f32,
+) -> u8 {
+    let mut sides = 0u8;
+    for a in 0..3 {
+        for (bit, t) in [(0, s[a].wrapping_sub(1)), (1, s[a] + 1)] {
             let mut q = s;
             q[a] = t;
-            t < samples[a] && value(q) < INSIDE_ZERO
-        })
-    })
+            if t < samples[a] && value(q) < INSIDE_ZERO {
+                sides |= 1 << (2 * a + bit);
+            }
+        }
+    }
+    sides
 }
 
 /// Settles the [`LONE_ZERO`]s of a box of samples: `values` holds the `n` points per axis from
@@ -134,12 +178,12 @@ pub fn resolve_lone(
                 .all(|a| l[a] < n[a])
                 .then(|| l[0] + n[0] * (l[1] + n[1] * l[2]))
         };
-        // The neighbours in the box first: a neighbour outside it costs an evaluation.
-        let inside = lone_inside(s, samples, |q| in_box(q).map_or(f32::NAN, |l| values[l]))
-            || lone_inside(s, samples, |q| match in_box(q) {
-                Some(_) => f32::NAN,
-                None => outer(q),
-            });
+        // A sample outside the box costs an evaluation (settled zeros of the box read as the
+        // zeros they are: the rule tells zeros by magnitude, and inside by `< INSIDE_ZERO`).
+        let inside = lone_inside(s, samples, |q| match in_box(q) {
+            Some(l) => values[l],
+            None => outer(q),
+        });
         values[i] = if inside { INSIDE_ZERO } else { OUTSIDE_ZERO };
     }
 }

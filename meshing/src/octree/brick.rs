@@ -12,6 +12,7 @@ use super::subdivide::Node;
 use super::thin::ThinCounts;
 use crate::grid::GridSpec;
 use crate::marching_cubes::disjoint;
+use crate::marching_cubes::pinch::{FaceRule, Pinch, PinchScratch};
 use crate::marching_cubes::polygonize::loop_centre;
 use crate::marching_cubes::sign::{LONE_ZERO, resolve_lone};
 use crate::marching_cubes::table::{CENTRE, NO_CENTRE, case_table, edge_origin};
@@ -92,6 +93,8 @@ pub(crate) struct BrickScratch<E: Evaluator> {
     samples: BoxSamples<E>,
     inside: Vec<u8>,
     batch: E::BatchScratch,
+    /// Scratch of the pinch check.
+    pinch: PinchScratch<E::IntervalScratch>,
     evaluation_s: f64,
 }
 
@@ -102,6 +105,7 @@ impl<E: Evaluator> BrickScratch<E> {
             samples: BoxSamples::with_clock(clock),
             inside: Vec::new(),
             batch: Default::default(),
+            pinch: Default::default(),
             evaluation_s: 0.0,
         }
     }
@@ -319,6 +323,10 @@ pub(crate) fn process<E: Evaluator>(
     let edges = out;
     let mut out = BrickTriangles::default();
     let table = case_table();
+    let rule = Pinch {
+        program: root,
+        spec,
+    };
     let corner = [0, 1, nx, nx + 1, nxy, nxy + 1, nxy + nx, nxy + nx + 1];
     // The crossing on edge `edge` of cell `(i, j, k)`, as the owner of that edge computes it.
     let crossing = |i: usize, j: usize, k: usize, edge: u8| {
@@ -349,8 +357,12 @@ pub(crate) fn process<E: Evaluator>(
                 if mask == 0 || mask == 255 {
                     continue;
                 }
-                let config =
-                    table.cell_config(mask, |c| s.samples.values[base + corner[c as usize]]);
+                let cell = [node.min[0] + i, node.min[1] + j, node.min[2] + k];
+                let config = table.cell_config_with(
+                    mask,
+                    |c| s.samples.values[base + corner[c as usize]],
+                    |bit, corners, zeros| rule.joined(cell, bit, corners, zeros, &mut s.pinch),
+                );
                 let centre = table.centre_loop[config];
                 let mut centre_at = glam::DVec3::ZERO;
                 if centre != NO_CENTRE {

@@ -29,7 +29,9 @@ pub use thin::ThinCounts;
 
 use crate::IndexedMesh;
 use crate::grid::GridSpec;
-use crate::marching_cubes::{SampleGrid, polygonize_into};
+use crate::marching_cubes::SampleGrid;
+use crate::marching_cubes::pinch::Pinch;
+use crate::marching_cubes::polygonize::polygonize_with;
 use crate::sink::MeshSink;
 use rayon::prelude::*;
 use solidkit_kernel::Evaluator;
@@ -114,7 +116,11 @@ pub fn mesh_sparse_into<E: Evaluator>(
 pub fn mesh_dense<E: Evaluator>(program: &E, spec: GridSpec) -> IndexedMesh {
     let samples = SampleGrid::sample_program(program, spec);
     let mut mesh = IndexedMesh::default();
-    polygonize_into(&samples, &mut mesh);
+    let rule = Pinch {
+        program,
+        spec: &samples.spec,
+    };
+    polygonize_with(&samples, &rule, &mut mesh);
     mesh
 }
 
