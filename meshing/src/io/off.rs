@@ -207,12 +207,7 @@ pub(super) fn write_faces<F: AsRef<[u32]>>(
 ) -> io::Result<()> {
     write_header(out, positions, faces)?;
     for face in faces {
-        let face = face.as_ref();
-        write!(out, "{}", face.len())?;
-        for i in face {
-            write!(out, " {i}")?;
-        }
-        writeln!(out)?;
+        super::text::write_face_row(out, face.as_ref())?;
     }
     Ok(())
 }

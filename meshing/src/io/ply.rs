@@ -494,12 +494,7 @@ fn write_ascii_body<F: AsRef<[u32]>>(
         writeln!(out, "{} {} {}", p.x, p.y, p.z)?;
     }
     for face in faces {
-        let face = face.as_ref();
-        write!(out, "{}", face.len())?;
-        for i in face {
-            write!(out, " {i}")?;
-        }
-        writeln!(out)?;
+        super::text::write_face_row(out, face.as_ref())?;
     }
     Ok(())
 }

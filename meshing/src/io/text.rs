@@ -1,5 +1,6 @@
-//! Scanning helpers shared by the text readers (ASCII STL, ASCII PLY, OFF): lines and
-//! whitespace-separated tokens with their 1-based line numbers, and number parsing.
+//! Helpers shared by the text formats (ASCII STL, ASCII PLY, OFF): lines and
+//! whitespace-separated tokens with their 1-based line numbers and number parsing for the
+//! readers, the polygon row for the writers.
 //!
 //! Everything works on bytes, so a file that is not valid UTF-8 (a Latin-1 solid name, say)
 //! is only rejected where a token that matters is not a number.
@@ -128,6 +129,16 @@ pub(super) fn parse_coordinate(token: &[u8]) -> Result<f64, String> {
 pub(super) fn capped_capacity(count: u64, available: usize, min_bytes: usize) -> usize {
     let fit = available / min_bytes.max(1);
     usize::try_from(count).map_or(fit, |count| count.min(fit))
+}
+
+/// Writes one polygon row of the text formats (OFF, ASCII PLY): the corner count, then the
+/// indices, then the end of the line.
+pub(super) fn write_face_row(out: &mut dyn std::io::Write, face: &[u32]) -> std::io::Result<()> {
+    write!(out, "{}", face.len())?;
+    for i in face {
+        write!(out, " {i}")?;
+    }
+    writeln!(out)
 }
 
 #[cfg(test)]

@@ -73,17 +73,7 @@ pub fn subdivide_adaptive(
     if !(tolerance.is_finite() && tolerance > 0.0) {
         return Err(SubdivisionError::Tolerance(tolerance.to_string()));
     }
-    if scheme.needs_triangles()
-        && let Some(f) = mesh
-            .face_ids()
-            .find(|&f| mesh.face_half_edges(f).count() != 3)
-    {
-        return Err(SubdivisionError::NotTriangles {
-            scheme,
-            face: f.index(),
-            corners: mesh.face_half_edges(f).count(),
-        });
-    }
+    super::check_faces(mesh, scheme)?;
     let mut current = mesh.clone();
     let mut records = Vec::new();
     for level in 1..=levels {

@@ -104,6 +104,23 @@ pub fn doo_sabin(mesh: &HalfEdgeMesh, levels: u32) -> Result<HalfEdgeMesh, Subdi
     subdivide(mesh, Scheme::DooSabin, levels, &Limits::default())
 }
 
+/// [`SubdivisionError::NotTriangles`] for the first face that is not a triangle when `scheme`
+/// needs them ([`Scheme::needs_triangles`]).
+pub(crate) fn check_faces(mesh: &HalfEdgeMesh, scheme: Scheme) -> Result<(), SubdivisionError> {
+    if scheme.needs_triangles()
+        && let Some(f) = mesh
+            .face_ids()
+            .find(|&f| mesh.face_half_edges(f).count() != 3)
+    {
+        return Err(SubdivisionError::NotTriangles {
+            scheme,
+            face: f.index(),
+            corners: mesh.face_half_edges(f).count(),
+        });
+    }
+    Ok(())
+}
+
 /// `mesh` subdivided `levels` times by `scheme` (zero levels, or a mesh without faces: a copy).
 ///
 /// # Errors
@@ -117,17 +134,7 @@ pub fn subdivide(
     levels: u32,
     limits: &Limits,
 ) -> Result<HalfEdgeMesh, SubdivisionError> {
-    if scheme.needs_triangles()
-        && let Some(f) = mesh
-            .face_ids()
-            .find(|&f| mesh.face_half_edges(f).count() != 3)
-    {
-        return Err(SubdivisionError::NotTriangles {
-            scheme,
-            face: f.index(),
-            corners: mesh.face_half_edges(f).count(),
-        });
-    }
+    check_faces(mesh, scheme)?;
     if mesh.face_count() == 0 {
         return Ok(mesh.clone());
     }

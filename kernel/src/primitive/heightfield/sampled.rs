@@ -15,17 +15,25 @@ fn cell(u: f64, n: usize) -> (usize, f64) {
     (i, s - i as f64)
 }
 
-/// `h` and its derivatives in `(u, v)` by bilinear interpolation.
+/// The local parameters `(t, s)` of `(u, v)` in its cell and the cell's four corner heights
+/// `[z00, z10, z01, z11]` (first index along `u`).
 #[inline]
-pub(super) fn bilinear(g: &HeightGrid, u: f64, v: f64) -> ParamDerivatives {
+fn corners(g: &HeightGrid, u: f64, v: f64) -> (f64, f64, [f64; 4]) {
     let (i, t) = cell(u, g.nx());
     let (j, s) = cell(v, g.ny());
-    let (z00, z10, z01, z11) = (
+    let z = [
         g.get(i, j),
         g.get(i + 1, j),
         g.get(i, j + 1),
         g.get(i + 1, j + 1),
-    );
+    ];
+    (t, s, z)
+}
+
+/// `h` and its derivatives in `(u, v)` by bilinear interpolation.
+#[inline]
+pub(super) fn bilinear(g: &HeightGrid, u: f64, v: f64) -> ParamDerivatives {
+    let (t, s, [z00, z10, z01, z11]) = corners(g, u, v);
     let (ku, kv) = ((g.nx() - 1) as f64, (g.ny() - 1) as f64);
     let bottom = z00 + t * (z10 - z00);
     let top = z01 + t * (z11 - z01);
@@ -46,14 +54,7 @@ pub(super) fn bilinear(g: &HeightGrid, u: f64, v: f64) -> ParamDerivatives {
 /// so [`bilinear_bounds`] bound it too.
 #[inline]
 pub(super) fn quads(g: &HeightGrid, u: f64, v: f64) -> ParamDerivatives {
-    let (i, t) = cell(u, g.nx());
-    let (j, s) = cell(v, g.ny());
-    let (z00, z10, z01, z11) = (
-        g.get(i, j),
-        g.get(i + 1, j),
-        g.get(i, j + 1),
-        g.get(i + 1, j + 1),
-    );
+    let (t, s, [z00, z10, z01, z11]) = corners(g, u, v);
     let c2 = 0.5 * (z00 + z10 + z01 + z11);
     let (dx, dy) = (t - 0.5, s - 0.5);
     // (h, ∂h/∂t, ∂h/∂s) on the triangle containing (t, s).
