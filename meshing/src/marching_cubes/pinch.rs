@@ -281,8 +281,11 @@ fn face_connected(
             (gx, gy.wrapping_sub(1)),
             (gx, gy + 1),
         ] {
-            let bit = 1u16 << (n.0 + GRID * n.1).min(15);
-            if n.0 < GRID && n.1 < GRID && seen & bit == 0 {
+            if n.0 >= GRID || n.1 >= GRID {
+                continue;
+            }
+            let bit = 1u16 << (n.0 + GRID * n.1);
+            if seen & bit == 0 {
                 seen |= bit;
                 stack.push(n);
             }
