@@ -237,7 +237,7 @@ pub(crate) fn build<F: Evaluator>(
                 let config = mc.cell_config_with(
                     usize::from(mask),
                     |c| values[base + corner[c as usize]],
-                    |bit, corners, zeros| rule.joined(cell, bit, corners, zeros, &mut s.pinch),
+                    |bit, corners, values| rule.joined(cell, bit, corners, values, &mut s.pinch),
                 ) as Config;
                 if !reachable(config) {
                     // Only a pinch check can give it (a separated face of a checkerboard cell).

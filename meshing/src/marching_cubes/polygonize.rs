@@ -133,7 +133,7 @@ fn layer_triangles<R: FaceRule>(
                     let c = usize::from(c);
                     g.at(i + (c & 1), j + (c >> 1 & 1), k + (c >> 2 & 1))
                 },
-                |bit, corners, zeros| rule.joined([i, j, k], bit, corners, zeros, &mut scratch),
+                |bit, corners, values| rule.joined([i, j, k], bit, corners, values, &mut scratch),
             );
             let vertex = |e: u8| {
                 let (axis, o) = edge_origin(e);

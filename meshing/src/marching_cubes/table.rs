@@ -28,7 +28,6 @@
 //! centroid of their crossings ([`CENTRE`]). A configuration has at most one such loop: it has at
 //! least eight crossings, and a cell has twelve edges.
 
-use super::sign::INSIDE_ZERO;
 use std::sync::LazyLock;
 
 /// Triangles of one case, as triples of cell edge numbers.
@@ -110,22 +109,21 @@ impl CaseTable {
     }
 
     /// [`CaseTable::cell_config`] with each face the decider joins confirmed by `confirm(bit,
-    /// [a, c, b, d], zeros)` (inside corners `a`, `c`; `zeros` says which of them is a zero
-    /// settled inside, [`INSIDE_ZERO`]): a face stays joined only when it returns true
-    /// ([`super::pinch`]).
+    /// [a, c, b, d], values)` (inside corners `a`, `c`, and the four corners' values in that
+    /// order): a face stays joined only when it returns true ([`super::pinch`]).
     #[inline]
     pub fn cell_config_with(
         &self,
         mask: usize,
         value: impl Fn(u8) -> f32,
-        mut confirm: impl FnMut(u8, [u8; 4], [bool; 2]) -> bool,
+        mut confirm: impl FnMut(u8, [u8; 4], [f32; 4]) -> bool,
     ) -> usize {
         let faces = &self.deciders[mask];
         let mut joined = 0u8;
         for &(bit, corners @ [a, c, b, d]) in &faces.faces[..usize::from(faces.count)] {
-            let (va, vc) = (value(a), value(c));
-            if face_joined(va, vc, value(b), value(d))
-                && confirm(bit, corners, [va == INSIDE_ZERO, vc == INSIDE_ZERO])
+            let values = [value(a), value(c), value(b), value(d)];
+            if face_joined(values[0], values[1], values[2], values[3])
+                && confirm(bit, corners, values)
             {
                 joined |= 1 << bit;
             }

@@ -361,7 +361,7 @@ pub(crate) fn process<E: Evaluator>(
                 let config = table.cell_config_with(
                     mask,
                     |c| s.samples.values[base + corner[c as usize]],
-                    |bit, corners, zeros| rule.joined(cell, bit, corners, zeros, &mut s.pinch),
+                    |bit, corners, values| rule.joined(cell, bit, corners, values, &mut s.pinch),
                 );
                 let centre = table.centre_loop[config];
                 let mut centre_at = glam::DVec3::ZERO;
