@@ -247,7 +247,7 @@ impl<E: Evaluator> Pinch<'_, E> {
 }
 
 /// Boxes covering each leg of the polyline through the saddle.
-const PATH_BOXES: usize = 4;
+pub const PATH_BOXES: usize = 4;
 
 /// The saddle of the bilinear interpolant of `f[x][y]` (values at the unit square's corners),
 /// kept a tenth of the face inside it.
