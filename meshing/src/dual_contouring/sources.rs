@@ -194,9 +194,12 @@ impl<E: Evaluator> Signs for SparseSigns<'_, E> {
             program.zero_side(q, &mut Default::default())
         });
         let v = if settled == LONE_ZERO {
-            lone_inside(s, spec.samples(), |q| {
-                grid_value(program, spec, q, &mut self.batch)
-            })
+            lone_inside(
+                s,
+                spec.samples(),
+                |_| None,
+                |q| grid_value(program, spec, q, &mut self.batch),
+            )
         } else {
             inside(settled)
         };

@@ -39,6 +39,7 @@
 use glam::DVec3;
 use solidkit_kernel::Field;
 use solidkit_kernel::program::perturb::ZeroSide;
+use std::collections::HashMap;
 
 /// Relative size of the single-precision noise band around zero (see [`snap_noise`]).
 pub const NOISE: f32 = 1e-6;
@@ -100,8 +101,9 @@ pub fn settle_field(field: &impl Field, x: f32, y: f32, z: f32, v: f32) -> f32 {
 
 /// Whether the lone zero at grid sample `s` is inside: one of its six lattice neighbours in a
 /// grid of `samples` points per axis has a value (noise snapped) below zero and not itself a
-/// zero, and it is not the upper end of a *pinch edge*. `value` gives any grid sample's value,
-/// settled or not.
+/// zero, and it is not the upper end of a *pinch edge*. `near` gives a grid sample's value
+/// (settled or not) where it is at hand, `far` evaluates one that is not; `far` is asked only
+/// where the samples at hand leave the answer open.
 ///
 /// A pinch edge joins two zero samples whose strictly inside neighbours lie on opposite sides
 /// across some other axis and on no common side: the edge lies in the surface of two solids that
@@ -112,11 +114,16 @@ pub fn settle_field(field: &impl Field, x: f32, y: f32, z: f32, v: f32) -> f32 {
 pub fn lone_inside(
     s: [usize; 3],
     samples: [usize; 3],
-    mut value: impl FnMut([usize; 3]) -> f32,
+    mut near: impl FnMut([usize; 3]) -> Option<f32>,
+    mut far: impl FnMut([usize; 3]) -> f32,
 ) -> bool {
-    let own = inside_sides(s, samples, &mut value);
-    if own == 0 {
-        return false;
+    let mut own = Sides::default();
+    own.read(s, samples, &mut near, None::<&mut fn([usize; 3]) -> f32>);
+    if own.inside == 0 {
+        own.read(s, samples, &mut near, Some(&mut far));
+        if own.inside == 0 {
+            return false;
+        }
     }
     // The lower neighbours along each axis: a zero there with opposite inside sides.
     !(0..3).any(|b| {
@@ -125,11 +132,18 @@ pub fn lone_inside(
         }
         let mut t = s;
         t[b] -= 1;
-        if value(t).abs() > f32::MIN_POSITIVE {
+        if near(t).unwrap_or_else(|| far(t)).abs() > f32::MIN_POSITIVE {
             // Not a zero (NaN included).
             return false;
         }
-        let other = inside_sides(t, samples, &mut value);
+        let mut other = Sides::default();
+        other.read(t, samples, &mut near, None::<&mut fn([usize; 3]) -> f32>);
+        if own.inside & other.inside != 0 {
+            return false;
+        }
+        own.read(s, samples, &mut near, Some(&mut far));
+        other.read(t, samples, &mut near, Some(&mut far));
+        let (own, other) = (own.inside, other.inside);
         own & other == 0
             && (0..3).filter(|&a| a != b).any(|a| {
                 let (lo, hi) = (1u8 << (2 * a), 2u8 << (2 * a));
@@ -138,24 +152,49 @@ pub fn lone_inside(
     })
 }
 
-/// The sides of grid sample `s` (bit `2·axis` below, `2·axis + 1` above) whose lattice neighbour
-/// is strictly inside: a value below zero and not itself a zero.
-fn inside_sides(
-    s: [usize; 3],
-    samples: [usize; 3],
-    value: &mut impl FnMut([usize; 3]) -> f32,
-) -> u8 {
-    let mut sides = 0u8;
-    for a in 0..3 {
-        for (bit, t) in [(0, s[a].wrapping_sub(1)), (1, s[a] + 1)] {
-            let mut q = s;
-            q[a] = t;
-            if t < samples[a] && value(q) < INSIDE_ZERO {
-                sides |= 1 << (2 * a + bit);
+/// The sides of a grid sample (bit `2·axis` below, `2·axis + 1` above) whose lattice neighbour
+/// is strictly inside (a value below zero and not itself a zero), read lazily.
+#[derive(Clone, Copy, Default)]
+struct Sides {
+    /// The sides read so far (or off the grid).
+    known: u8,
+    /// The sides known to be strictly inside.
+    inside: u8,
+}
+
+impl Sides {
+    /// Reads the unknown sides of sample `s`: those `near` has, and with `far` all the rest.
+    fn read<F: FnMut([usize; 3]) -> f32>(
+        &mut self,
+        s: [usize; 3],
+        samples: [usize; 3],
+        near: &mut impl FnMut([usize; 3]) -> Option<f32>,
+        mut far: Option<&mut F>,
+    ) {
+        for a in 0..3 {
+            for (bit, t) in [(0, s[a].wrapping_sub(1)), (1, s[a] + 1)] {
+                let m = 1u8 << (2 * a + bit);
+                if self.known & m != 0 {
+                    continue;
+                }
+                if t >= samples[a] {
+                    self.known |= m;
+                    continue;
+                }
+                let mut q = s;
+                q[a] = t;
+                let v = match (near(q), far.as_deref_mut()) {
+                    (Some(v), _) => v,
+                    (None, Some(far)) => far(q),
+                    (None, None) => continue,
+                };
+                self.known |= m;
+                if v < INSIDE_ZERO {
+                    self.inside |= m;
+                }
             }
         }
     }
-    sides
 }
 
 /// Settles the [`LONE_ZERO`]s of a box of samples: `values` holds the `n` points per axis from
@@ -169,6 +208,7 @@ pub fn resolve_lone(
     lone: &[usize],
     mut outer: impl FnMut([usize; 3]) -> f32,
 ) {
+    let mut evaluated: HashMap<[usize; 3], f32> = HashMap::new();
     for &i in lone {
         let local = [i % n[0], i / n[0] % n[1], i / (n[0] * n[1])];
         let s = [0, 1, 2].map(|a| origin[a] + local[a]);
@@ -178,12 +218,15 @@ pub fn resolve_lone(
                 .all(|a| l[a] < n[a])
                 .then(|| l[0] + n[0] * (l[1] + n[1] * l[2]))
         };
-        // A sample outside the box costs an evaluation (settled zeros of the box read as the
-        // zeros they are: the rule tells zeros by magnitude, and inside by `< INSIDE_ZERO`).
-        let inside = lone_inside(s, samples, |q| match in_box(q) {
-            Some(l) => values[l],
-            None => outer(q),
-        });
+        // A sample outside the box costs an evaluation, once per box (settled zeros of the box
+        // read as the zeros they are: the rule tells zeros by magnitude, and inside by
+        // `< INSIDE_ZERO`).
+        let inside = lone_inside(
+            s,
+            samples,
+            |q| in_box(q).map(|l| values[l]),
+            |q| *evaluated.entry(q).or_insert_with(|| outer(q)),
+        );
         values[i] = if inside { INSIDE_ZERO } else { OUTSIDE_ZERO };
     }
 }

@@ -197,8 +197,14 @@ impl<E: Evaluator> BoxSamples<E> {
         }
         if !self.lone.is_empty() {
             let samples = spec.samples();
+            // The rule reads samples up to two lattice steps outside the box: evaluated with the
+            // program pruned for the box so grown (the same values, bit for bit, as the brick
+            // that holds them samples; a long program costs far more evaluated whole).
+            let mut halo: Option<Option<E>> = None;
+            let interval = &mut self.interval;
             resolve_lone(&mut self.values, n, min, samples, &self.lone, |q| {
-                grid_value(root, spec, q, batch)
+                let halo = halo.get_or_insert_with(|| halo_program(root, spec, min, n, interval));
+                grid_value(halo.as_ref().unwrap_or(root), spec, q, batch)
             });
         }
         let slots = &mut self.zero_slots;
@@ -229,6 +235,24 @@ impl<E: Evaluator> BoxSamples<E> {
 
 /// The settled-but-lone value (noise snapped, zeros left zero) of grid sample `q` by `program`:
 /// single precision at the sample's single-precision coordinates, as every sampler evaluates it.
+/// `root` pruned for the box of the `n` samples per axis from grid sample `min` grown by two
+/// samples on every side (clamped to the grid); `None` when nothing can be cut.
+fn halo_program<E: Evaluator>(
+    root: &E,
+    spec: &GridSpec,
+    min: [usize; 3],
+    n: [usize; 3],
+    s: &mut E::IntervalScratch,
+) -> Option<E> {
+    let samples = spec.samples();
+    let lo = [0, 1, 2].map(|a| f64::from(spec.coordinate(a, min[a].saturating_sub(2))));
+    let hi =
+        [0, 1, 2].map(|a| f64::from(spec.coordinate(a, (min[a] + n[a] + 1).min(samples[a] - 1))));
+    let b = solidkit_kernel::Aabb::new(glam::DVec3::from(lo), glam::DVec3::from(hi));
+    root.interval_with(&b, s);
+    root.prune(s)
+}
+
 pub(crate) fn grid_value<E: Evaluator>(
     program: &E,
     spec: &GridSpec,
