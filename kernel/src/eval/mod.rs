@@ -91,6 +91,13 @@ pub trait Evaluator: Clone + Send + Sync {
     /// increases it.
     fn len(&self) -> usize;
 
+    /// Whether the evaluator holds a choice between operands (a min, max or blend); true when it
+    /// cannot tell. Where an evaluator valid over a box has none, no contact, crease or pinch
+    /// between operands lies in that box.
+    fn has_choices(&self) -> bool {
+        true
+    }
+
     /// True when [`Evaluator::len`] is 0.
     fn is_empty(&self) -> bool {
         self.len() == 0

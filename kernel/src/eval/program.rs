@@ -20,6 +20,11 @@ impl Evaluator for Program {
     }
 
     #[inline]
+    fn has_choices(&self) -> bool {
+        Program::has_choices(self)
+    }
+
+    #[inline]
     fn eval_many(&self, x: &[f32], y: &[f32], z: &[f32], out: &mut [f32], s: &mut BatchScratch) {
         Program::eval_many(self, x, y, z, out, s);
     }

@@ -135,6 +135,13 @@ impl Program {
         self.instrs.is_empty()
     }
 
+    /// Whether any instruction chooses between operands (min, max, smooth min).
+    pub fn has_choices(&self) -> bool {
+        self.instrs
+            .iter()
+            .any(|i| matches!(i, Instr::Min(..) | Instr::Max(..) | Instr::SmoothMin(..)))
+    }
+
     /// Number of leaf instructions (primitive evaluations).
     pub fn leaf_count(&self) -> usize {
         self.instrs

@@ -217,6 +217,7 @@ pub(crate) fn build<F: Evaluator>(
     let rule = Pinch {
         program: root,
         spec,
+        choices: field.has_choices(),
     };
     let mut face_keys: Vec<u16> = Vec::new();
     for k in 0..e[2] {

@@ -52,8 +52,10 @@
 //! Separating faces can give a cell a configuration the decider alone never gives (the
 //! checkerboard masks with one pair of opposite faces joined and another separated); dual
 //! contouring then claims nothing about self-intersections (its `unreachable` count) and the
-//! report tests them. Cost: one interval per face the decider joins, the polyline's boxes on
-//! the contested ones (8 intervals), the quadtree only where they fail (contacts, thin necks).
+//! report tests them. Cost: nothing in a brick whose pruned program has no choice left (most
+//! of a gyroid away from its trim: [`Pinch::choices`]), elsewhere one interval per face the
+//! decider joins, the polyline's boxes on the contested ones (8 intervals), the quadtree only
+//! where they fail (contacts, thin necks).
 
 use super::sign::INSIDE_ZERO;
 use crate::grid::GridSpec;
@@ -107,6 +109,11 @@ pub struct Pinch<'a, E: Evaluator> {
     pub program: &'a E,
     /// The grid.
     pub spec: &'a GridSpec,
+    /// False when the cells asked lie in a box where an evaluator valid there has no choice
+    /// ([`Evaluator::has_choices`]: a brick's pruned program): the full program's choices are
+    /// all decided over every face there, none is contested, and every face keeps the
+    /// decider's answer without an interval (the answer the check gives, at no cost).
+    pub choices: bool,
 }
 
 /// Per-thread scratch of [`Pinch`]: interval buffers and the faces decided lately (each face is
@@ -142,6 +149,9 @@ impl<E: Evaluator> FaceRule for Pinch<'_, E> {
         values: [f32; 4],
         s: &mut Self::Scratch,
     ) -> bool {
+        if !self.choices {
+            return true;
+        }
         let axis = usize::from(bit >> 1);
         let mut q = cell;
         q[axis] += usize::from(bit & 1);

@@ -350,6 +350,7 @@ pub(crate) fn process<E: Evaluator>(
     let rule = Pinch {
         program: root,
         spec,
+        choices: node.program.has_choices(),
     };
     let corner = [0, 1, nx, nx + 1, nxy, nxy + 1, nxy + nx, nxy + nx + 1];
     // The crossing on edge `edge` of cell `(i, j, k)`, as the owner of that edge computes it.

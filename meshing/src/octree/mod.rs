@@ -119,6 +119,7 @@ pub fn mesh_dense<E: Evaluator>(program: &E, spec: GridSpec) -> IndexedMesh {
     let rule = Pinch {
         program,
         spec: &samples.spec,
+        choices: program.has_choices(),
     };
     polygonize_with(&samples, &rule, &mut mesh);
     mesh
