@@ -99,6 +99,35 @@ fn formula_surfaces_graph_and_closed_torus() {
 }
 
 #[test]
+fn adaptive_tessellation_closes_and_keeps_the_volume() {
+    check("adaptive_bump.json", None, 0.03);
+    check("adaptive_torus.json", Some(2.0 * PI * PI * 0.09), 0.02);
+    // The bump with far fewer triangles than its regular grid at the same tolerance.
+    let solid = load_tree("surfaces/adaptive_bump.json");
+    let s = spec(&solid);
+    let mut uniform = s.clone();
+    uniform.adaptive = false;
+    let (a, u) = (
+        s.sheet(&NoMeshResolver).unwrap(),
+        uniform.sheet(&NoMeshResolver).unwrap(),
+    );
+    assert!(a.chord_error.unwrap() <= 0.002 && u.chord_error.unwrap() <= 0.002);
+    println!(
+        "adaptive_bump: {} triangles (chord bound {:.2e}) against the grid's {} ({:.2e})",
+        a.mesh.triangles.len(),
+        a.chord_error.unwrap(),
+        u.mesh.triangles.len(),
+        u.chord_error.unwrap()
+    );
+    assert!(
+        3 * a.mesh.triangles.len() < u.mesh.triangles.len(),
+        "{} adaptive, {} uniform",
+        a.mesh.triangles.len(),
+        u.mesh.triangles.len()
+    );
+}
+
+#[test]
 fn triangular_patches() {
     check("bezier_triangle.json", None, 0.04);
     check("pn_triangles.json", None, 0.01);
@@ -139,6 +168,8 @@ fn surfaces_round_trip_through_json() {
         "nurbs_surface.json",
         "param_surface.json",
         "param_torus.json",
+        "adaptive_bump.json",
+        "adaptive_torus.json",
         "bezier_triangle.json",
         "pn_triangles.json",
     ] {
@@ -201,6 +232,14 @@ fn bad_surfaces_are_refused_with_their_place() {
         (
             r#"{"type": "bezier_patch", "points": [[[0,0,0],[1,0,0]],[[0,1,0],[1,1,0]]], "thickness": 1, "colour": 2}"#,
             "unknown key \"colour\"",
+        ),
+        (
+            r#"{"type": "bezier_patch", "points": [[[0,0,0],[1,0,0]],[[0,1,0],[1,1,0]]], "thickness": 1, "tessellation": "fine"}"#,
+            "tessellation: expected \"uniform\" or \"adaptive\"",
+        ),
+        (
+            r#"{"type": "bezier_triangle", "degree": 1, "points": [[0,0,0],[1,0,0],[0,1,0]], "thickness": 1, "tessellation": "adaptive"}"#,
+            "unknown key \"tessellation\"",
         ),
     ];
     for (text, expected) in cases {

@@ -143,6 +143,14 @@ def test_parametric_surfaces_through_node():
     assert abs(slab.mesh(resolution=96).report()["volume"] - 1.5) < 0.02 * 1.5
     with pytest.raises(sk.LoadError, match="give \"thickness\" or \"base\""):
         sk.node("bezier_patch", points=[[[0, 0, 0], [1, 0, 0]], [[0, 1, 0], [1, 1, 0]]])
+    # The same hill tessellated adaptively: the same solid.
+    adaptive = sk.node("param_surface", z="sin(u*v)", u=[-2, 2], v=[-2, 2], base=-1.5,
+                       tessellation="adaptive")
+    r = adaptive.mesh(resolution=96).report()
+    assert r["closed"] and r["shells"] == 1
+    assert abs(r["volume"] - 24.0) < 0.01 * 24.0
+    with pytest.raises(sk.LoadError, match="tessellation"):
+        sk.node("param_surface", z="u", u=[0, 1], v=[0, 1], base=-1, tessellation="fine")
 
 
 def test_rhai_scripts_take_defines_as_constants(tmp_path):

@@ -23,7 +23,11 @@
 //! offset faces of a thickness interpolate the exact offset surface at their vertices; a
 //! thickness above a radius of curvature folds the offset (the mesh then intersects itself).
 
+mod adaptive;
+#[cfg(test)]
+mod adaptive_tests;
 mod basis;
+mod bezier_bounds;
 mod close;
 mod derivs;
 mod error;

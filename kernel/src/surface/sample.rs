@@ -6,10 +6,11 @@
 
 use super::error::SurfaceError;
 use super::spec::{PnSource, SurfaceKind, SurfaceSpec};
+use super::tensor::TensorSurface;
 use crate::IndexedMesh;
 use crate::patch::{pn_refine, vertex_normals};
 use crate::primitive::{MeshResolver, MeshSolidError};
-use glam::DVec3;
+use glam::{DVec2, DVec3};
 use std::collections::HashMap;
 
 /// Largest number of segments along one parameter direction or triangle edge.
@@ -93,7 +94,7 @@ pub fn sample(spec: &SurfaceSpec, resolver: &dyn MeshResolver) -> Result<Sampled
             })?;
             (mesh, None, None, false, [s, s])
         }
-        kind => grid(kind, spec.tolerance)?,
+        kind => grid(kind, spec.tolerance, spec.adaptive)?.0,
     };
     Ok(weld(mesh, normals, chord, estimated, segments))
 }
@@ -106,8 +107,15 @@ type Parts = (
     [usize; 2],
 );
 
-/// The regular grid of a rectangle-parametrised surface meeting the tolerance.
-fn grid(kind: &SurfaceKind, tolerance: Option<f64>) -> Result<Parts, SurfaceError> {
+/// The regular grid of a rectangle-parametrised surface meeting the tolerance, or with
+/// `adaptive` its curvature-adaptive tessellation ([`super::adaptive`]; the grid where the
+/// surface's edges meet in a way the adaptive tree cannot follow).
+/// Also returns each vertex's parameters (before welding).
+pub(super) fn grid(
+    kind: &SurfaceKind,
+    tolerance: Option<f64>,
+    adaptive: bool,
+) -> Result<(Parts, Vec<DVec2>), SurfaceError> {
     let at = |s: f64, t: f64| {
         kind.derivatives(s, t)
             .expect("a rectangle-parametrised kind")
@@ -154,12 +162,69 @@ fn grid(kind: &SurfaceKind, tolerance: Option<f64>) -> Result<Parts, SurfaceErro
     // (A/n_s² + B/n_t²)/8 ≤ tol with each half ≤ tol/2: n = ⌈√(A / (4 tol))⌉.
     let count = |c: f64| ((c / (4.0 * tol)).sqrt().ceil() as usize).clamp(4, MAX_SEGMENTS);
     let (ns, nt) = (count(a), count(b));
+    if adaptive && let Some(seams) = super::adaptive::seams(&at) {
+        let bezier = match kind {
+            SurfaceKind::Bezier(p) => Some(p),
+            SurfaceKind::Interpolating(p) => Some(p.bezier()),
+            _ => None,
+        };
+        let third = match kind {
+            SurfaceKind::BSpline(p) => third_bounds(p),
+            _ => None,
+        };
+        let local = |lo: DVec2, hi: DVec2| -> [f64; 3] {
+            let (c, h) = ((lo + hi) * 0.5, (hi - lo) * 0.5);
+            if let Some(p) = bezier {
+                let b = super::bezier_bounds::second_bounds(p.counts(), p.points(), lo, hi);
+                return [0, 1, 2].map(|k| b[k].min(m[k]));
+            }
+            match third {
+                // The centre's second derivatives plus the third-derivative bounds times the
+                // half sizes (mean value theorem), capped by the global bounds.
+                Some(t) => {
+                    let d = at(c.x, c.y);
+                    [
+                        (d.puu.length() + t[0] * h.x + t[1] * h.y).min(m[0]),
+                        (d.puv.length() + t[1] * h.x + t[2] * h.y).min(m[1]),
+                        (d.pvv.length() + t[2] * h.x + t[3] * h.y).min(m[2]),
+                    ]
+                }
+                // An estimate: the largest of 3 × 3 samples with a margin, capped by the
+                // global estimate.
+                None => {
+                    let mut e = [0.0f64; 3];
+                    for i in 0..3 {
+                        for j in 0..3 {
+                            let d = at(lo.x + h.x * i as f64, lo.y + h.y * j as f64);
+                            e[0] = e[0].max(d.puu.length());
+                            e[1] = e[1].max(d.puv.length());
+                            e[2] = e[2].max(d.pvv.length());
+                        }
+                    }
+                    [0, 1, 2].map(|k| (1.25 * e[k]).min(m[k]))
+                }
+            }
+        };
+        let t = super::adaptive::tessellate(&at, &local, tol, [ns, nt], seams);
+        return Ok((
+            (
+                IndexedMesh::new(t.positions, t.triangles),
+                Some(t.normals),
+                Some(t.chord),
+                estimated,
+                t.finest,
+            ),
+            t.params,
+        ));
+    }
     let chord = (a / (ns * ns) as f64 + b / (nt * nt) as f64) / 8.0;
     let mut positions = Vec::with_capacity((ns + 1) * (nt + 1));
     let mut normals = Vec::with_capacity(positions.capacity());
+    let mut params = Vec::with_capacity(positions.capacity());
     for i in 0..=ns {
         for j in 0..=nt {
             let d = at(i as f64 / ns as f64, j as f64 / nt as f64);
+            params.push(DVec2::new(i as f64 / ns as f64, j as f64 / nt as f64));
             positions.push(d.p);
             normals.push(d.normal());
         }
@@ -174,12 +239,26 @@ fn grid(kind: &SurfaceKind, tolerance: Option<f64>) -> Result<Parts, SurfaceErro
         }
     }
     Ok((
-        IndexedMesh::new(positions, triangles),
-        Some(normals),
-        Some(chord),
-        estimated,
-        [ns, nt],
+        (
+            IndexedMesh::new(positions, triangles),
+            Some(normals),
+            Some(chord),
+            estimated,
+            [ns, nt],
+        ),
+        params,
     ))
+}
+
+/// Bounds of the third derivatives `(S_sss, S_sst, S_stt, S_ttt)` over the unit square of a
+/// non-rational tensor surface (`None` for NURBS).
+fn third_bounds(p: &TensorSurface) -> Option<[f64; 4]> {
+    Some([
+        p.derivative_bound(3, 0)?,
+        p.derivative_bound(2, 1)?,
+        p.derivative_bound(1, 2)?,
+        p.derivative_bound(0, 3)?,
+    ])
 }
 
 /// Welds points that coincide to 10⁻⁹ of the mesh's size, drops triangles that collapse, and

@@ -137,4 +137,7 @@ pub struct SurfaceSpec {
     pub tolerance: Option<f64>,
     /// Segments per edge (triangular patches, PN triangles); `None`: the default 16 (8 for PN).
     pub segments: Option<usize>,
+    /// Curvature-adaptive tessellation (`"tessellation": "adaptive"`, rectangle-parametrised
+    /// kinds) instead of the regular grid.
+    pub adaptive: bool,
 }

@@ -222,6 +222,17 @@ impl TensorSurface {
     /// for a non-rational surface: the largest control point of each derivative's own B-spline
     /// net (convex hull property). `None` for NURBS.
     pub fn second_derivative_bounds(&self) -> Option<[f64; 3]> {
+        Some([
+            self.derivative_bound(2, 0)?,
+            self.derivative_bound(1, 1)?,
+            self.derivative_bound(0, 2)?,
+        ])
+    }
+
+    /// A bound of `|∂^(du+dv) S / ∂s^du ∂t^dv|` over the unit square for a non-rational surface:
+    /// the largest control point of that derivative's own B-spline net (convex hull property).
+    /// `None` for NURBS.
+    pub fn derivative_bound(&self, du: usize, dv: usize) -> Option<f64> {
         if self.weights.is_some() {
             return None;
         }
@@ -242,7 +253,7 @@ impl TensorSurface {
             let scale = (ub - ua).powi(du as i32) * (vb - va).powi(dv as i32);
             pts.iter().map(|p| p.length()).fold(0.0, f64::max) * scale
         };
-        Some([net(2, 0), net(1, 1), net(0, 2)])
+        Some(net(du, dv))
     }
 }
 

@@ -12,6 +12,7 @@ fn spec(kind: SurfaceKind, closure: Closure) -> SurfaceSpec {
         closure,
         tolerance: None,
         segments: None,
+        adaptive: false,
     }
 }
 
@@ -155,6 +156,7 @@ fn nurbs_quarter_cylinder_is_exact_and_its_curvature_is_that_of_a_cylinder() {
         },
         tolerance: Some(1e-5),
         segments: None,
+        adaptive: false,
     };
     let m = sp.closed_mesh(&NoMeshResolver).unwrap();
     assert!(closed_oriented(&m));

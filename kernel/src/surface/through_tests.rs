@@ -101,6 +101,7 @@ fn closes_into_a_solid_and_refuses_bad_points() {
         closure: Closure::Base { z: -3.0 },
         tolerance: Some(1e-3),
         segments: None,
+        adaptive: false,
     };
     let sheet = spec.sheet(&NoMeshResolver).unwrap();
     assert!(!sheet.estimated && sheet.chord_error.unwrap() <= 1e-3);

@@ -1,6 +1,6 @@
 //! Reading the parametric surface node types (`bezier_patch`, `interpolating_patch`, `bspline_surface`, `nurbs_surface`,
 //! `param_surface`, `bezier_triangle`, `pn_triangles`) and their closure keys (`thickness` with
-//! `side`, or `base`; neither for a closed surface), `tolerance` and `segments`. See
+//! `side`, or `base`; neither for a closed surface), `tolerance`, `segments` and `tessellation`. See
 //! [`crate::surface`] for what they mean; errors name the key they are about.
 
 use super::{Params, R, Value, find};
@@ -13,7 +13,8 @@ use crate::surface::{
 use glam::DVec3;
 
 /// The keys of each surface node: its own, then the closure keys every one has.
-const PATCH: [&str; 6] = [
+const PATCH: [&str; 7] = [
+    "tessellation",
     "points",
     "thickness",
     "side",
@@ -21,7 +22,8 @@ const PATCH: [&str; 6] = [
     "tolerance",
     "segments",
 ];
-const SPLINE: [&str; 9] = [
+const SPLINE: [&str; 10] = [
+    "tessellation",
     "degree",
     "points",
     "knots_u",
@@ -32,7 +34,8 @@ const SPLINE: [&str; 9] = [
     "tolerance",
     "segments",
 ];
-const NURBS: [&str; 10] = [
+const NURBS: [&str; 11] = [
+    "tessellation",
     "degree",
     "points",
     "weights",
@@ -44,7 +47,8 @@ const NURBS: [&str; 10] = [
     "tolerance",
     "segments",
 ];
-const FORMULA: [&str; 10] = [
+const FORMULA: [&str; 11] = [
+    "tessellation",
     "x",
     "y",
     "z",
@@ -189,6 +193,20 @@ impl Params<'_, '_> {
             segments: match find(self.entries, "segments") {
                 Some(_) => Some(self.count("segments")?),
                 None => None,
+            },
+            adaptive: match find(self.entries, "tessellation") {
+                None => false,
+                Some(_) => match self.string("tessellation")? {
+                    "uniform" => false,
+                    "adaptive" => true,
+                    other => {
+                        return Err(self.fail(
+                            self.at("tessellation")?,
+                            "tessellation",
+                            format!("expected \"uniform\" or \"adaptive\", got \"{other}\""),
+                        ));
+                    }
+                },
             },
         };
         let solid = spec

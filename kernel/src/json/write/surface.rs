@@ -1,6 +1,6 @@
 //! Writing the parametric surface nodes back as they were read (the inverse of
 //! `read/surface.rs`): the surface's own keys, then `thickness` and `side` or `base`, then
-//! `tolerance` and `segments` when given. B-spline and NURBS knots are always written.
+//! `tolerance`, `tessellation` (when adaptive) and `segments` when given. B-spline and NURBS knots are always written.
 
 use super::{num, string, vec3};
 use crate::surface::{Closure, PnSource, SurfaceKind, SurfaceSpec, TensorSurface};
@@ -85,6 +85,9 @@ pub(super) fn members(spec: &SurfaceSpec) -> String {
     }
     if let Some(t) = spec.tolerance {
         out += &format!(", \"tolerance\": {}", num(t));
+    }
+    if spec.adaptive {
+        out += ", \"tessellation\": \"adaptive\"";
     }
     if let Some(s) = spec.segments {
         out += &format!(", \"segments\": {s}");
