@@ -7,7 +7,8 @@
 //! The field of `S` is `f(x) = min_t f_c(M(t)⁻¹x)`. It is built as the n-ary union (a `min`)
 //! of `N` rigidly moved copies of the child at parameters `t₀ < t₁ < … < t_{N−1}`, chosen so that
 //! between consecutive parameters every point of the child's bounding box travels at most the
-//! tolerance `τ` (see `sample.rs` for how that motion is bounded). The sampled field `f_N`
+//! tolerance `τ` (see `sample.rs` for how that motion is bounded: a proof for paths with control
+//! points, an estimate for formula curves, [`SweptVolume::proven`]). The sampled field `f_N`
 //! then satisfies, with `L` the child field's Lipschitz constant (1 for the kernel's distance
 //! fields and distance bounds):
 //!
@@ -85,6 +86,9 @@ pub struct SweptVolume {
     pub tolerance: f64,
     /// The parameters of the copies, increasing.
     pub params: Vec<f64>,
+    /// Whether the travel between copies is a proven bound (false for formula paths, whose
+    /// speed is estimated from samples).
+    pub proven: bool,
 }
 
 /// The default tolerance for a child with bounding-box diagonal `diagonal`.
@@ -125,7 +129,7 @@ pub fn swept_volume(
         motion::radius_about_origin(bbox.min, bbox.max)
     };
     let bounds = sample::step_bounds(&motion, rho)?;
-    let params = sample::choose(&motion.fine, &bounds, tolerance, MAX_COPIES)?;
+    let params = sample::choose(&motion.fine, &bounds.bounds, tolerance, MAX_COPIES)?;
     // The child's count is bounded: a nested swept volume passed this check itself.
     let child_nodes = child.node_count();
     let nodes = params
@@ -154,6 +158,7 @@ pub fn swept_volume(
         solid: Solid::from_parts(NodeKind::Union, copies),
         tolerance,
         params,
+        proven: bounds.proven,
     })
 }
 

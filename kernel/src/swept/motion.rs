@@ -1,10 +1,12 @@
 //! The motion `M(t)` of the swept solid: its origin carried to the path point `C(t)`, turned by
-//! the rotation-minimising frame relative to the frame at the start (or not turned: `fixed`).
+//! the rotation-minimising frame relative to the frame at the start (or not turned: `fixed`). The
+//! frames are the sweep's (double reflection) at the fine parameters, joined by the shortest
+//! rotation between consecutive ones at constant angular speed.
 
 use super::SweptFrame;
 use crate::curve::{Curve3, Parametric};
 use crate::primitive::sweep::Frames;
-use glam::{DAffine3, DMat3, DVec3};
+use glam::{DAffine3, DMat3, DQuat, DVec3};
 
 /// Fine steps per Bézier piece of the path over which the frames are propagated and the speed
 /// is sampled.
@@ -17,10 +19,11 @@ const MAX_STEPS: usize = 1 << 17;
 /// The rigid motion of the solid along the path.
 pub(crate) struct Motion<'a> {
     path: &'a Parametric,
-    /// Rotation-minimising frames (none for a fixed frame).
-    frames: Option<Frames>,
-    /// The frame's axes at the start as columns (`u`, `v`, `t`), inverted by transposing.
-    start: DMat3,
+    /// The rotation part of `M(t)` at each fine parameter (the rotation-minimising frame's axes
+    /// there times the inverse of those at the start); none for a fixed frame. Between fine
+    /// parameters the rotation turns at constant angular speed along the shortest arc from one
+    /// to the next (`slerp`), so its turning over any part of a step is exactly known.
+    rotations: Option<Vec<DQuat>>,
     /// The fine parameters, increasing from the domain's start to its end.
     pub(super) fine: Vec<f64>,
 }
@@ -30,7 +33,7 @@ impl<'a> Motion<'a> {
     pub(crate) fn new(path: &'a Parametric, frame: SweptFrame) -> Motion<'a> {
         let fine = fine_params(path);
         let (t0, t1) = path.domain();
-        let frames = match frame {
+        let rotations = match frame {
             SweptFrame::Fixed => None,
             SweptFrame::Rmf => {
                 let (a, b) = (path.jet(t0), path.jet(t1));
@@ -38,34 +41,52 @@ impl<'a> Motion<'a> {
                 // (the last copy then matches the first); otherwise the frame is left free.
                 let closed = path.is_closed()
                     && a.d1.normalize_or_zero().dot(b.d1.normalize_or_zero()) > 1.0 - 1e-9;
-                Some(Frames::from_jets(|t| path.jet(t), &fine, closed))
+                let frames = Frames::from_jets(|t| path.jet(t), &fine, closed);
+                let axes = |t: f64| {
+                    let j = path.jet(t);
+                    let f = frames.at(t, j.point, j.d1);
+                    DMat3::from_cols(f.u, f.v, f.t)
+                };
+                let start = axes(t0).transpose();
+                Some(
+                    fine.iter()
+                        .map(|&t| DQuat::from_mat3(&(axes(t) * start)).normalize())
+                        .collect(),
+                )
             }
         };
-        let mut m = Motion {
+        Motion {
             path,
-            frames,
-            start: DMat3::IDENTITY,
+            rotations,
             fine,
-        };
-        m.start = m.axes(t0);
-        m
+        }
     }
 
-    /// The frame's axes at `t` as the columns of a rotation (identity for a fixed frame).
-    fn axes(&self, t: f64) -> DMat3 {
-        match &self.frames {
-            None => DMat3::IDENTITY,
-            Some(frames) => {
-                let j = self.path.jet(t);
-                let f = frames.at(t, j.point, j.d1);
-                DMat3::from_cols(f.u, f.v, f.t)
-            }
+    /// The fine step holding `t` and where `t` lies in it (0 to 1).
+    fn step(&self, t: f64) -> (usize, f64) {
+        let n = self.fine.len();
+        let i = self
+            .fine
+            .partition_point(|&f| f <= t)
+            .saturating_sub(1)
+            .min(n.saturating_sub(2));
+        if n < 2 {
+            return (0, 0.0);
         }
+        let (a, b) = (self.fine[i], self.fine[i + 1]);
+        (i, ((t - a) / (b - a)).clamp(0.0, 1.0))
     }
 
     /// The rotation part of `M(t)`.
     pub(crate) fn rotation(&self, t: f64) -> DMat3 {
-        self.axes(t) * self.start.transpose()
+        match &self.rotations {
+            None => DMat3::IDENTITY,
+            Some(q) if q.len() < 2 => DMat3::from_quat(q[0]),
+            Some(q) => {
+                let (i, s) = self.step(t);
+                DMat3::from_quat(q[i].slerp(q[i + 1], s))
+            }
+        }
     }
 
     /// `M(t)`: child coordinates to world coordinates.
@@ -78,17 +99,22 @@ impl<'a> Motion<'a> {
         self.path.jet(t).d1.length()
     }
 
-    /// True when the frame turns (rotation-minimising).
-    pub(super) fn turns(&self) -> bool {
-        self.frames.is_some()
+    /// The angle the rotation turns through over fine step `i` (radians; 0 for a fixed frame).
+    pub(super) fn step_turn(&self, i: usize) -> f64 {
+        match &self.rotations {
+            None => 0.0,
+            Some(q) => {
+                let r = q[i].inverse() * q[i + 1];
+                // The shortest arc, as slerp takes it.
+                2.0 * r.xyz().length().atan2(r.w.abs())
+            }
+        }
     }
-}
 
-/// The angle of the rotation `a·bᵀ` (radians, in `[0, π]`).
-pub(super) fn angle_between(a: DMat3, b: DMat3) -> f64 {
-    let r = a * b.transpose();
-    let trace = r.x_axis.x + r.y_axis.y + r.z_axis.z;
-    ((trace - 1.0) * 0.5).clamp(-1.0, 1.0).acos()
+    /// The path's Bézier pieces (none for a formula curve).
+    pub(super) fn pieces(&self) -> Option<Vec<crate::curve::BezierPiece>> {
+        self.path.pieces()
+    }
 }
 
 /// The fine parameters: [`STEPS_PER_PIECE`] equal steps over every Bézier piece (fewer when the

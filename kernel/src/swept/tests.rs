@@ -109,8 +109,8 @@ fn field_bound_holds_for_an_off_centre_box_turning_along_a_bezier() {
 
 #[test]
 fn copies_are_spaced_by_the_tolerance_along_a_line() {
-    // A fixed frame along a straight segment of length 4: the copies move by at most τ (with
-    // the 10 % margin, about τ/1.1) between consecutive parameters.
+    // A fixed frame along a straight segment of length 4: the copies move by at most τ between
+    // consecutive parameters (the bound is exact here: 40 steps of τ).
     let path = bezier(&[[0.0, 0.0, 0.0], [4.0, 0.0, 0.0]]);
     let s = swept_volume(&Solid::sphere(1.0), &path, SweptFrame::Fixed, Some(0.1)).expect("ok");
     let pts: Vec<f64> = s.params.iter().map(|&t| path.point(t).x).collect();
@@ -231,4 +231,30 @@ fn box_corners_stay_within_half_the_tolerance_of_a_copy() {
         Nurbs::circle(DVec3::ZERO, 2.0).expect("circle"),
     ));
     check_travel(&child, &circle, SweptFrame::Rmf, 0.05);
+}
+
+#[test]
+fn bounds_are_proven_for_control_point_paths_and_estimated_for_formulas() {
+    let child = Solid::sphere(0.3);
+    let helix = Parametric::Formula(
+        crate::curve::FormulaCurve::new(["cos(u)", "sin(u)", "0.2*u"], (0.0, 6.0))
+            .expect("formula"),
+    );
+    let swept = swept_volume(&child, &helix, SweptFrame::Rmf, Some(0.05)).expect("swept");
+    assert!(!swept.proven);
+    check_travel(&child, &helix, SweptFrame::Rmf, 0.05);
+    let path = bezier(&[[0.0, 0.0, 0.0], [1.0, 2.0, 0.0], [3.0, -1.0, 1.0]]);
+    assert!(
+        swept_volume(&child, &path, SweptFrame::Rmf, Some(0.05))
+            .expect("swept")
+            .proven
+    );
+    let circle = Parametric::Curve(Curve::Nurbs(
+        Nurbs::circle(DVec3::ZERO, 2.0).expect("circle"),
+    ));
+    assert!(
+        swept_volume(&child, &circle, SweptFrame::Rmf, Some(0.05))
+            .expect("swept")
+            .proven
+    );
 }
