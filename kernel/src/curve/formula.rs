@@ -9,7 +9,8 @@
 
 use super::CurveError;
 use super::piece::Jet;
-use crate::primitive::expr::code::{Dual, Num, Op, run};
+use crate::Interval;
+use crate::primitive::expr::code::{Dual, Iv, Num, Op, run};
 use crate::primitive::expr::parse::parse_in;
 use glam::DVec3;
 
@@ -84,6 +85,39 @@ impl FormulaCurve {
         let mut stack = Vec::new();
         let c = |k: usize, stack: &mut Vec<f64>| run(&self.code[k], [u, 0.0, 0.0], stack);
         DVec3::new(c(0, &mut stack), c(1, &mut stack), c(2, &mut stack))
+    }
+
+    /// A bound of the speed `|C'(u)|` over `[a, b]` from interval arithmetic on the formulas'
+    /// derivatives (forward-mode differentiation over intervals, widened by 10⁻¹² for rounding);
+    /// `None` where the derivative's range is unbounded or may be NaN.
+    pub fn speed_bound(&self, a: f64, b: f64) -> Option<f64> {
+        let (a, b) = (
+            a.clamp(self.domain.0, self.domain.1),
+            b.clamp(self.domain.0, self.domain.1),
+        );
+        let var = Dual {
+            v: Iv(
+                Interval {
+                    lo: a.min(b),
+                    hi: a.max(b),
+                },
+                false,
+            ),
+            d: [Iv::constant(1.0), Iv::constant(0.0), Iv::constant(0.0)],
+        };
+        let args = [var, Dual::constant(0.0), Dual::constant(0.0)];
+        let mut stack = Vec::new();
+        let mut sum = 0.0;
+        for code in &self.code {
+            let r: Dual<Iv> = run(code, args, &mut stack);
+            let Iv(d, nan) = r.d[0];
+            if nan || !(d.lo.is_finite() && d.hi.is_finite()) {
+                return None;
+            }
+            let m = d.lo.abs().max(d.hi.abs());
+            sum += m * m;
+        }
+        Some(sum.sqrt() * (1.0 + 1e-12))
     }
 
     /// Point, first and second derivative at `u` (clamped to the domain).

@@ -7,8 +7,9 @@
 //! The field of `S` is `f(x) = min_t f_c(M(t)⁻¹x)`. It is built as the n-ary union (a `min`)
 //! of `N` rigidly moved copies of the child at parameters `t₀ < t₁ < … < t_{N−1}`, chosen so that
 //! between consecutive parameters every point of the child's bounding box travels at most the
-//! tolerance `τ` (see `sample.rs` for how that motion is bounded: a proof for paths with control
-//! points, an estimate for formula curves, [`SweptVolume::proven`]). The sampled field `f_N`
+//! tolerance `τ` (see `sample.rs` for how that motion is bounded: a proof from the control
+//! points, or for formula curves from interval arithmetic on the derivative; an estimate only
+//! where that range is unbounded, [`SweptVolume::proven`]). The sampled field `f_N`
 //! then satisfies, with `L` the child field's Lipschitz constant (1 for the kernel's distance
 //! fields and distance bounds):
 //!
@@ -86,8 +87,8 @@ pub struct SweptVolume {
     pub tolerance: f64,
     /// The parameters of the copies, increasing.
     pub params: Vec<f64>,
-    /// Whether the travel between copies is a proven bound (false for formula paths, whose
-    /// speed is estimated from samples).
+    /// Whether the travel between copies is a proven bound (false where a formula path's
+    /// derivative has no bounded range on some step, so its speed was estimated from samples).
     pub proven: bool,
 }
 

@@ -111,6 +111,15 @@ impl<'a> Motion<'a> {
         }
     }
 
+    /// A bound of the path's speed over `[a, b]` for a formula curve (see
+    /// [`crate::curve::FormulaCurve::speed_bound`]); `None` for other paths or no bound.
+    pub(super) fn formula_speed(&self, a: f64, b: f64) -> Option<f64> {
+        match self.path {
+            Parametric::Formula(f) => f.speed_bound(a, b),
+            Parametric::Curve(_) => None,
+        }
+    }
+
     /// The path's Bézier pieces (none for a formula curve).
     pub(super) fn pieces(&self) -> Option<Vec<crate::curve::BezierPiece>> {
         self.path.pieces()

@@ -12,19 +12,22 @@
 //!   points, convex hull property); for a rational one, `2n·(w_max/w_min)·D / (b − a)` (`D` the
 //!   diagonal of the control points' box: from `C' = (n/W) Σ Bᵢⁿ⁻¹ (wᵢ₊₁(Pᵢ₊₁ − C) − wᵢ(Pᵢ − C))`
 //!   with `C` in the hull and `W ≥ w_min`);
-//! - for a formula curve (no control points) the speed is *estimated*: the largest of `|C'|` at
-//!   the step's ends and midpoint, with a 10 % margin ([`StepBounds::proven`] is then false).
+//! - for a formula curve, interval arithmetic on its derivative over the step
+//!   ([`FormulaCurve::speed_bound`](crate::curve::FormulaCurve::speed_bound)); only where that
+//!   range is unbounded (a division by a range holding 0, a NaN) is the speed *estimated*: the
+//!   largest of `|C'|` at the step's ends and midpoint, with a 10 % margin
+//!   ([`StepBounds::proven`] is then false).
 //!
 //! Each step's bound `dᵢ` is that speed bound times `b − a` plus `ρ` times the turn; both parts
 //! grow linearly across the step, so the copies are placed greedily where the `dᵢ` add up to the
 //! tolerance, within a step by linear interpolation of the parameter, and the travel between
-//! consecutive copies is at most the tolerance (proven for every path but formula curves). A
+//! consecutive copies is at most the tolerance (proven unless a speed was estimated). A
 //! path of total bound `D` gets about `D/τ + 1` copies.
 
 use super::error::SweptError;
 use super::motion::Motion;
 
-/// Margin on the sampled speeds of a formula curve's fine step.
+/// Margin on the sampled speeds of a fine step whose speed has no bound.
 const MARGIN: f64 = 1.1;
 
 /// The motion bound of every fine step, and whether they are proven bounds.
@@ -41,6 +44,7 @@ pub(super) fn step_bounds(motion: &Motion<'_>, rho: f64) -> Result<StepBounds, S
     let pieces = motion.pieces();
     let mut out = Vec::with_capacity(fine.len().saturating_sub(1));
     let mut piece = 0usize;
+    let mut proven = true;
     for (i, w) in fine.windows(2).enumerate() {
         let (a, b) = (w[0], w[1]);
         let travel = match &pieces {
@@ -63,11 +67,15 @@ pub(super) fn step_bounds(motion: &Motion<'_>, rho: f64) -> Result<StepBounds, S
                     2.0 * n * q.weight_ratio() * q.bbox().size().length()
                 }
             }
-            None => {
-                let m = 0.5 * (a + b);
-                let speed = motion.speed(a).max(motion.speed(m)).max(motion.speed(b));
-                MARGIN * (b - a) * speed
-            }
+            None => match motion.formula_speed(a, b) {
+                Some(speed) => (b - a) * speed,
+                None => {
+                    proven = false;
+                    let m = 0.5 * (a + b);
+                    let speed = motion.speed(a).max(motion.speed(m)).max(motion.speed(b));
+                    MARGIN * (b - a) * speed
+                }
+            },
         };
         let d = travel + rho * motion.step_turn(i);
         if !d.is_finite() {
@@ -77,7 +85,7 @@ pub(super) fn step_bounds(motion: &Motion<'_>, rho: f64) -> Result<StepBounds, S
     }
     Ok(StepBounds {
         bounds: out,
-        proven: pieces.is_some(),
+        proven,
     })
 }
 

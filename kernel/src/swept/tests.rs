@@ -234,15 +234,33 @@ fn box_corners_stay_within_half_the_tolerance_of_a_copy() {
 }
 
 #[test]
-fn bounds_are_proven_for_control_point_paths_and_estimated_for_formulas() {
+fn bounds_are_proven_unless_a_formula_derivative_is_unbounded() {
     let child = Solid::sphere(0.3);
     let helix = Parametric::Formula(
         crate::curve::FormulaCurve::new(["cos(u)", "sin(u)", "0.2*u"], (0.0, 6.0))
             .expect("formula"),
     );
     let swept = swept_volume(&child, &helix, SweptFrame::Rmf, Some(0.05)).expect("swept");
-    assert!(!swept.proven);
+    assert!(swept.proven);
     check_travel(&child, &helix, SweptFrame::Rmf, 0.05);
+    // A quotient whose denominator stays away from 0: bounded; sqrt at 0 (its derivative is
+    // unbounded there): estimated.
+    let bell = Parametric::Formula(
+        crate::curve::FormulaCurve::new(["u", "1/(u*u + 0.5)", "0"], (-1.0, 1.0)).expect("formula"),
+    );
+    assert!(
+        swept_volume(&child, &bell, SweptFrame::Fixed, Some(0.05))
+            .expect("swept")
+            .proven
+    );
+    let root = Parametric::Formula(
+        crate::curve::FormulaCurve::new(["u", "sqrt(u)", "0"], (0.0, 1.0)).expect("formula"),
+    );
+    assert!(
+        !swept_volume(&child, &root, SweptFrame::Fixed, Some(0.05))
+            .expect("swept")
+            .proven
+    );
     let path = bezier(&[[0.0, 0.0, 0.0], [1.0, 2.0, 0.0], [3.0, -1.0, 1.0]]);
     assert!(
         swept_volume(&child, &path, SweptFrame::Rmf, Some(0.05))
