@@ -419,6 +419,11 @@ pub struct BenchArgs {
     /// Polygonization methods, comma-separated: mc, dc (each case runs with each).
     #[arg(long, value_enum, value_delimiter = ',', default_value = "mc")]
     pub method: Vec<Method>,
+    /// Thread scaling: worker-thread counts, comma-separated (e.g. `1,2`); each case runs with
+    /// each, and the table's `speed-up` column gives the first count's median meshing and whole
+    /// run times over each row's.
+    #[arg(long, value_delimiter = ',', value_parser = parse_threads)]
+    pub scaling: Vec<usize>,
 }
 
 /// Arguments of the hidden `solidkit bench-case` (one case; prints one JSON line).

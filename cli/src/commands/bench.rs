@@ -9,7 +9,8 @@
 //! meshing over `GridSpec::covering(domain, n)` (exactly `n` cells along the longest side, no
 //! padding); the report (`solidkit mesh`'s, self-intersections included) is timed on its own
 //! beside it (`report s`, and `total s` for the whole run), and says how it knew the
-//! self-intersections (`construction` or `tested`).
+//! self-intersections (`construction` or `tested`). `--scaling 1,2` runs every case with each
+//! thread count and adds the speed-up over the first count.
 
 mod case;
 mod case_table;
@@ -60,7 +61,11 @@ pub fn run(a: &BenchArgs) -> Result<u8> {
         .iter()
         .map(|n| Model::by_name(n.trim()))
         .collect::<Result<Vec<_>, _>>()?;
-    let threads = rayon::current_num_threads();
+    let counts = if a.scaling.is_empty() {
+        vec![rayon::current_num_threads()]
+    } else {
+        a.scaling.clone()
+    };
     let mut results = Vec::new();
     for model in &models {
         let resolutions = if a.resolution.is_empty() {
@@ -70,18 +75,23 @@ pub fn run(a: &BenchArgs) -> Result<u8> {
         };
         for &n in resolutions {
             for &method in &a.method {
-                crate::output::errln!(
-                    "bench: {} at {n}^3 ({}), {threads} threads, {} runs",
-                    model.name,
-                    method.name(),
-                    a.repeat
-                );
-                let r = if a.in_process {
-                    case::run(model, n, a.repeat, method, false)?
-                } else {
-                    run_child(&model.name, n, a.repeat, method, threads)?
-                };
-                results.push(r);
+                for &threads in &counts {
+                    crate::output::errln!(
+                        "bench: {} at {n}^3 ({}), {threads} threads, {} runs",
+                        model.name,
+                        method.name(),
+                        a.repeat
+                    );
+                    let r = if a.in_process {
+                        rayon::ThreadPoolBuilder::new()
+                            .num_threads(threads)
+                            .build()?
+                            .install(|| case::run(model, n, a.repeat, method, false))?
+                    } else {
+                        run_child(&model.name, n, a.repeat, method, threads)?
+                    };
+                    results.push(r);
+                }
             }
         }
     }
@@ -92,7 +102,10 @@ pub fn run(a: &BenchArgs) -> Result<u8> {
             serde_json::to_string_pretty(&json!({ "cases": cases }))?
         )?;
     } else {
-        out!("{}", case_table::table(&results).render())?;
+        out!(
+            "{}",
+            case_table::table(&results, !a.scaling.is_empty()).render()
+        )?;
     }
     Ok(if results.iter().all(|r| r.check.passed()) {
         0

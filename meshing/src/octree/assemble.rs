@@ -74,12 +74,7 @@ pub(crate) fn assemble(
     let cells = spec.cells;
     let dims = cells.map(|c| c.div_ceil(brick).max(1));
     let index = BrickIndex::new(&bricks, dims);
-    // Bricks of each brick row (z, y), in x order.
-    let mut rows: HashMap<(usize, usize), Vec<usize>> = HashMap::new();
-    for (b, o) in bricks.iter().enumerate() {
-        rows.entry((o.coord[2], o.coord[1])).or_default().push(b);
-    }
-    let no_bricks: &[usize] = &[];
+    let rows = BrickRows::new(&bricks, dims);
     // Vertex numbering: the base index of every owned edge row of every brick.
     let mut bases: Vec<Vec<u32>> = bricks.iter().map(|o| vec![0; o.edge_rows.len()]).collect();
     let mut order: Vec<(usize, usize)> = Vec::new(); // (brick, row) in global order
@@ -88,7 +83,7 @@ pub(crate) fn assemble(
         let (bk, kl) = owner(k, brick, dims[2]);
         for j in 0..=cells[1] {
             let (bj, jl) = owner(j, brick, dims[1]);
-            for &b in rows.get(&(bk, bj)).map_or(no_bricks, Vec::as_slice) {
+            for b in rows.get(bk, bj) {
                 let o = &bricks[b];
                 if kl >= o.owned[2] || jl >= o.owned[1] {
                     continue;
@@ -226,21 +221,61 @@ fn unpack_edge(key: u64) -> ([usize; 3], usize) {
     ([part(2), part(22), part(42)], (key & 3) as usize)
 }
 
+/// The bricks of each brick row `(z, y)`, in `x` order (the input's order), as one flat list
+/// with a start per row: looked up once per grid row by the serial numbering passes, where a
+/// hash map's hashing cost more than the lookups' work.
+struct BrickRows {
+    dims_y: usize,
+    starts: Vec<u32>,
+    bricks: Vec<u32>,
+}
+
+impl BrickRows {
+    fn new(bricks: &[BrickEdges], dims: [usize; 3]) -> Self {
+        let row = |o: &BrickEdges| o.coord[2] * dims[1] + o.coord[1];
+        let mut starts = vec![0u32; dims[1] * dims[2] + 1];
+        for o in bricks {
+            starts[row(o) + 1] += 1;
+        }
+        for r in 0..dims[1] * dims[2] {
+            starts[r + 1] += starts[r];
+        }
+        let mut next = starts.clone();
+        let mut list = vec![0u32; bricks.len()];
+        for (b, o) in bricks.iter().enumerate() {
+            let r = row(o);
+            list[next[r] as usize] = b as u32;
+            next[r] += 1;
+        }
+        BrickRows {
+            dims_y: dims[1],
+            starts,
+            bricks: list,
+        }
+    }
+
+    /// The bricks of brick row `(bk, bj)`.
+    fn get(&self, bk: usize, bj: usize) -> impl Iterator<Item = usize> + '_ {
+        let r = bk * self.dims_y + bj;
+        self.bricks[self.starts[r] as usize..self.starts[r + 1] as usize]
+            .iter()
+            .map(|&b| b as usize)
+    }
+}
+
 /// Every cell row of the grid in the dense path's order (`k`, then `j`, then the bricks of the
 /// brick row in `x` order), as (brick, the brick's local cell row `kl · extent_y + jl`).
 fn cell_rows<'a>(
     cells: [usize; 3],
     brick: usize,
-    rows: &'a HashMap<(usize, usize), Vec<usize>>,
+    rows: &'a BrickRows,
     extents: &'a [[usize; 3]],
 ) -> impl Iterator<Item = (usize, usize)> + 'a {
     (0..cells[2]).flat_map(move |k| {
         (0..cells[1]).flat_map(move |j| {
             let (kl, jl) = (k % brick, j % brick);
-            rows.get(&(k / brick, j / brick))
-                .map_or(&[][..], Vec::as_slice)
-                .iter()
-                .map(move |&b| (b, kl * extents[b][1] + jl))
+            rows.get(k / brick, j / brick)
+                .map(move |b| (b, kl * extents[b][1] + jl))
         })
     })
 }

@@ -29,9 +29,30 @@ fn yes(b: bool) -> String {
     if b { "yes" } else { "NO" }.to_string()
 }
 
-/// The results as a table, one row per case.
-pub fn table(results: &[CaseResult]) -> Table {
-    let mut t = Table::new(&COLUMNS);
+/// The speed-up of `r` over the first result of the same model, resolution and method (the
+/// first thread count of a scaling run): `meshing× / whole run×`.
+fn speed_up(results: &[CaseResult], r: &CaseResult) -> String {
+    let base = results
+        .iter()
+        .find(|b| b.model == r.model && b.resolution == r.resolution && b.method == r.method);
+    match base {
+        Some(b) => format!(
+            "{:.2}x / {:.2}x",
+            b.median_s() / r.median_s(),
+            b.total_median_s() / r.total_median_s()
+        ),
+        None => "-".into(),
+    }
+}
+
+/// The results as a table, one row per case; with `scaling`, a last column of speed-ups over
+/// each case's first thread count.
+pub fn table(results: &[CaseResult], scaling: bool) -> Table {
+    let mut columns = COLUMNS.to_vec();
+    if scaling {
+        columns.push("speed-up");
+    }
+    let mut t = Table::new(&columns);
     for r in results {
         let c = &r.check;
         let genus = match (c.genus, c.expected_genus) {
@@ -63,6 +84,9 @@ pub fn table(results: &[CaseResult]) -> Table {
             c.volume_error()
                 .map_or("-".into(), |e| format!("{:+.3}%", 100.0 * e)),
         ]);
+        if scaling {
+            t.rows.last_mut().expect("a row").push(speed_up(results, r));
+        }
     }
     t
 }

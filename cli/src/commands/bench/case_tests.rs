@@ -16,7 +16,7 @@ fn a_tiny_case_fills_one_row_of_every_column() {
     assert!(r.triangles > 0 && r.samples_evaluated > 0);
     assert!(r.check.passed(), "{:?}", r.check);
     assert!(r.check.volume_error().is_some());
-    let text = table(std::slice::from_ref(&r)).render();
+    let text = table(std::slice::from_ref(&r), false).render();
     let lines: Vec<&str> = text.lines().collect();
     assert_eq!(lines.len(), 2);
     for (line, first) in lines.iter().zip(["model", "sphere"]) {
@@ -39,6 +39,30 @@ fn a_tiny_case_fills_one_row_of_every_column() {
     ] {
         assert!(v.get(key).is_some(), "{key}");
     }
+}
+
+#[test]
+fn scaling_rows_give_the_speed_up_over_the_first_thread_count() {
+    let model = Model::by_name("sphere").expect("model");
+    let one = run(&model, 16, 1, Method::Mc, false).expect("runs");
+    let mut two = one.clone();
+    two.threads = 2;
+    two.times_s = one.times_s.iter().map(|t| t / 2.0).collect();
+    two.report_times_s = one.report_times_s.iter().map(|t| t / 2.0).collect();
+    let text = table(&[one, two], true).render();
+    let lines: Vec<&str> = text.lines().collect();
+    assert_eq!(lines.len(), 3);
+    assert!(lines[0].trim_end().ends_with("speed-up"), "{}", lines[0]);
+    assert!(
+        lines[1].trim_end().ends_with("1.00x / 1.00x"),
+        "{}",
+        lines[1]
+    );
+    assert!(
+        lines[2].trim_end().ends_with("2.00x / 2.00x"),
+        "{}",
+        lines[2]
+    );
 }
 
 #[test]
