@@ -24,8 +24,9 @@
 //!
 //! **The tree.** The base grid keeps the uniform tessellation's aspect (its counts divided by a
 //! power of two), each base cell is split while the bound of its two diagonal triangles exceeds
-//! the tolerance, down to the uniform tessellation's spacing at most (where that bound is the
-//! uniform one's, so the tolerance is always met where the bounds are sound), then leaves are
+//! the tolerance, down to a finest spacing between the uniform tessellation's and half of it
+//! (where that bound is at most the uniform one's, so the tolerance is met wherever the grid's
+//! is and the bounds are sound), then leaves are
 //! split until neighbours differ by one level at most. A leaf with no finer neighbour is cut by
 //! its diagonal as a grid cell is; any other fans from its centre through its corners and the
 //! corners of finer neighbours on its sides (one per side at most), so the mesh has no
@@ -54,8 +55,8 @@ pub(super) struct Tessellation {
 pub(super) type LocalBounds<'a> = dyn Fn(DVec2, DVec2) -> [f64; 3] + 'a;
 
 /// The adaptive tessellation of the surface `at` (point and derivatives at `(s, t)`) meeting
-/// `tol` with the second-derivative bounds `local`, no finer than `uniform` segments per
-/// direction, balanced across the `seams` ([`seams`]).
+/// `tol` with the second-derivative bounds `local`, its finest spacing at most that of `uniform`
+/// segments per direction and more than half of it, balanced across the `seams` ([`seams`]).
 pub(super) fn tessellate(
     at: &dyn Fn(f64, f64) -> SurfaceDerivatives,
     local: &LocalBounds<'_>,

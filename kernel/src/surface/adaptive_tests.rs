@@ -23,6 +23,25 @@ fn bump() -> SurfaceKind {
     SurfaceKind::Bezier(TensorSurface::bezier([7, 7], pts).unwrap())
 }
 
+/// An adaptively tessellated surface node.
+fn adaptive(kind: SurfaceKind, closure: Closure, tolerance: f64) -> SurfaceSpec {
+    SurfaceSpec {
+        kind,
+        closure,
+        tolerance: Some(tolerance),
+        segments: None,
+        adaptive: true,
+    }
+}
+
+/// A slab of `thickness` about the surface.
+fn slab(thickness: f64) -> Closure {
+    Closure::Thickness {
+        thickness,
+        side: Side::Both,
+    }
+}
+
 /// The largest distance between the surface and the (unwelded) mesh at 15 barycentric points of
 /// every triangle, each mapped through the triangle's parameters.
 fn measured_chord(kind: &SurfaceKind, mesh: &IndexedMesh, params: &[DVec2]) -> f64 {
@@ -75,16 +94,7 @@ fn a_bump_meets_its_bound_with_far_fewer_triangles_and_no_t_junction() {
             uniform.triangles.len()
         );
         // Every boundary edge of the sheet lies on the domain's boundary: no crack inside.
-        let mut s = SurfaceSpec {
-            kind: kind.clone(),
-            closure: Closure::Thickness {
-                thickness: 0.1,
-                side: Side::Both,
-            },
-            tolerance: Some(tol),
-            segments: None,
-            adaptive: true,
-        };
+        let mut s = adaptive(kind.clone(), slab(0.1), tol);
         let sheet = s.sheet(&NoMeshResolver).unwrap();
         let on_edge = |p: DVec3| {
             p.x.abs() < 1e-12
@@ -132,13 +142,7 @@ fn seams_close_on_a_torus_and_a_sphere() {
         (torus, 2.0 * PI * PI * 2.0 * 0.25),
         (sphere, 4.0 / 3.0 * PI),
     ] {
-        let s = SurfaceSpec {
-            kind: SurfaceKind::Formula(surface),
-            closure: Closure::Closed,
-            tolerance: Some(1e-3),
-            segments: None,
-            adaptive: true,
-        };
+        let s = adaptive(SurfaceKind::Formula(surface), Closure::Closed, 1e-3);
         let sheet = s.sheet(&NoMeshResolver).unwrap();
         assert!(sheet.estimated);
         assert!(boundary_edges(&sheet.mesh).is_empty(), "{exact}");
@@ -157,16 +161,7 @@ fn a_tube_closes_its_seam_and_keeps_its_rims_open() {
         [0.0, 1.0],
     )
     .unwrap();
-    let s = SurfaceSpec {
-        kind: SurfaceKind::Formula(tube),
-        closure: Closure::Thickness {
-            thickness: 0.05,
-            side: Side::Both,
-        },
-        tolerance: Some(1e-3),
-        segments: None,
-        adaptive: true,
-    };
+    let s = adaptive(SurfaceKind::Formula(tube), slab(0.05), 1e-3);
     let sheet = s.sheet(&NoMeshResolver).unwrap();
     // Only the two rims are open: every boundary edge lies at z = 0 or z = 1.
     for (a, b) in boundary_edges(&sheet.mesh) {
