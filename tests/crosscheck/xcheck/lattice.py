@@ -222,6 +222,8 @@ def solidkit_result(tree_file: Path, root: dict, resolution: int, timeout: float
                 "command": " ".join(cmd)}
     report = json.loads(r.stdout)
     ms = measure.measure(*meshio.read_stl(stl))
+    if not paths.keep_meshes():
+        stl.unlink()  # remade by the command printed with any failure
     ctx = make_context(root, resolution)
     # solidkit's grid: ceil(extent / cell) cells per axis and a padding cell at each end
     cells = [int(math.ceil(e / ctx.cell - 1e-9)) + 2 for e in ctx.box[1] - ctx.box[0]]

@@ -215,6 +215,15 @@ def judge(res: dict) -> dict:
     return res
 
 
+def _prune(res: dict, out: Path) -> dict:
+    """The meshes of an example that agreed (or has none to compare) deleted once measured,
+    unless paths.keep_meshes(): the disagreements keep theirs for a look."""
+    if res.get("verdict") != "differ" and not paths.keep_meshes():
+        for mesh in ("openscad.stl", "solidkit.stl"):
+            (out / res["name"] / mesh).unlink(missing_ok=True)
+    return res
+
+
 def run_all() -> list:
     """Every example run (in parallel) and judged; report.md and report.json written to
     CROSSCHECK_OUT/openscad_examples/."""
@@ -225,7 +234,8 @@ def run_all() -> list:
     jobs = int(os.environ.get("CROSSCHECK_JOBS", os.cpu_count() or 1))
     todo = discover()
     with ThreadPoolExecutor(max_workers=max(1, jobs)) as pool:
-        results = list(pool.map(lambda nf: judge(run_one(nf[0], nf[1], out, solidkit, conf.get(nf[0], {}))), todo))
+        results = list(pool.map(lambda nf: _prune(judge(run_one(nf[0], nf[1], out, solidkit,
+                                                                conf.get(nf[0], {}))), out), todo))
     (out / "report.json").write_text(json.dumps(results, indent=1, default=str))
     (out / "report.md").write_text(table(results, conf))
     return results
