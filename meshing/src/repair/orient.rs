@@ -13,18 +13,33 @@ pub(super) fn orient_consistently(
     table: &EdgeTable,
 ) -> (Vec<(u32, u32)>, Vec<bool>) {
     let loops: &[[u32; 3]] = tris;
-    // The corner across each two-face edge (`u32::MAX`: none).
-    let mut mate = vec![u32::MAX; loops.corner_count()];
+    // The one-face edges, and whether every two-face edge is already traversed once each way:
+    // then the search below would reverse nothing (each face is reached with the winding it
+    // has), and is skipped.
     let mut boundary = Vec::new();
+    let mut consistent = true;
     for edge in table.edges() {
         let mut corners = edge.corners();
         match (corners.next(), corners.next(), corners.next()) {
             (Some(c), None, _) => boundary.push(c),
-            (Some(c), Some(d), None) => {
-                mate[c] = d as u32;
-                mate[d] = c as u32;
-            }
+            (Some(c), Some(d), None) => consistent &= loops.origin(c) != loops.origin(d),
             _ => {}
+        }
+    }
+    if consistent {
+        let open = boundary
+            .into_iter()
+            .map(|c| (loops.origin(c), loops.dest(c)))
+            .collect();
+        return (open, vec![false; tris.len()]);
+    }
+    // The corner across each two-face edge (`u32::MAX`: none).
+    let mut mate = vec![u32::MAX; loops.corner_count()];
+    for edge in table.edges() {
+        let mut corners = edge.corners();
+        if let (Some(c), Some(d), None) = (corners.next(), corners.next(), corners.next()) {
+            mate[c] = d as u32;
+            mate[d] = c as u32;
         }
     }
     let mut flip = vec![false; tris.len()];
