@@ -173,7 +173,8 @@ pub fn report_dict<'py>(
     // A mesher's output must be closed and manifold: say so when it is not. (A mesh from
     // elsewhere is only reported on, as `solidkit check` does.)
     if !extra.as_object().is_none_or(|m| m.is_empty()) {
-        warnings.extend(warnings::not_closed_manifold(&report));
+        warnings
+            .extend(warnings::empty(&report).or_else(|| warnings::not_closed_manifold(&report)));
     }
     let mut v = serde_json::to_value(&report).map_err(errors::other)?;
     if let (Value::Object(map), Value::Object(more)) = (&mut v, extra) {

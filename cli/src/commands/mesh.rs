@@ -75,7 +75,7 @@ pub fn run(a: &MeshArgs) -> Result<u8> {
         self_intersections: !a.no_self_intersections,
     });
     let report_s = report_start.elapsed().as_secs_f64();
-    if let Some(w) = warnings::not_closed_manifold(&r) {
+    if let Some(w) = warnings::empty(&r).or_else(|| warnings::not_closed_manifold(&r)) {
         let w = format!("{input}: {w}");
         crate::output::errln!("warning: {}", crate::escape::one_line(&w));
         warnings.push(w);

@@ -1,5 +1,5 @@
 //! Warnings the pipeline attaches to a result that may be incomplete or wrong: open mesh
-//! operands, and a polygonization that is not a closed manifold.
+//! operands, and a polygonization that is empty or not a closed manifold.
 
 use crate::TopologyReport;
 use solidkit_kernel::primitive::MeshSource;
@@ -39,6 +39,16 @@ pub fn not_closed_manifold(report: &TopologyReport) -> Option<String> {
             "the mesh is not a closed manifold ({} boundary edges, {} non-manifold edges, {} non-manifold vertices): the field could not be evaluated faithfully everywhere, so the result may be wrong",
             report.boundary_edges, report.non_manifold_edges, report.non_manifold_vertices
         )
+    })
+}
+
+/// The warning for an empty polygonization: nothing of the solid was found inside the grid (an
+/// empty Boolean result such as a part cut away whole, or parts thinner than the refinement
+/// reaches, which are reported on their own too). OpenSCAD refuses such a model ("top level
+/// object is empty"); here the empty mesh is written, and said so.
+pub fn empty(report: &TopologyReport) -> Option<String> {
+    (report.faces == 0).then(|| {
+        "the mesh is empty: no part of the solid was found inside the grid (nothing is inside, or every part is thinner than the refinement reaches)".to_string()
     })
 }
 

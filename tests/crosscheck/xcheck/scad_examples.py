@@ -173,7 +173,8 @@ def judge(res: dict) -> dict:
     elif status in ("2D", "empty"):
         err = res.get("solidkit_stderr", "").lower()
         want = "2d" if status == "2D" else "empty"
-        if res.get("solidkit_rc") == 2 and want in err:
+        if (res.get("solidkit_rc") == 2 and want in err) or (
+                status == "empty" and res.get("solidkit_rc") == 0 and "the mesh is empty" in err):
             verdict = "not 3D"
         else:
             verdict = "differ"

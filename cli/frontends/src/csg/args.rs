@@ -56,7 +56,11 @@ impl Stmt {
 
     /// `$fn`, `$fa`, `$fs` with OpenSCAD's defaults 0, 12, 2.
     pub fn resolution(&self) -> Result<Resolution, CsgError> {
-        let fn_ = self.num("$fn", None, 0.0)?;
+        // A `$fn` of inf or nan means 3 fragments in OpenSCAD (see `facets::fragments`).
+        let fn_ = match self.arg("$fn", None) {
+            Some(Value::Num(n)) if !n.is_finite() => f64::NAN,
+            _ => self.num("$fn", None, 0.0)?,
+        };
         if fn_ > MAX_FRAGMENTS as f64 {
             return Err(self.error(format!(
                 "'$fn' = {fn_}: more than {} fragments",

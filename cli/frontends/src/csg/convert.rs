@@ -334,12 +334,25 @@ fn node(
         }
         "cylinder" => cylinder(stmt, faceted).and_then(leaf),
         "polyhedron" => {
-            let points = stmt.points("points", Some(0), 3)?;
+            // OpenSCAD reports points that are not 3-vectors and skips the polyhedron.
+            let points = match stmt.points("points", Some(0), 3) {
+                Ok(p) => p,
+                Err(CsgError::Argument { message, .. }) => {
+                    ctx.warn(stmt, format!("{message}: the object is skipped"));
+                    return Ok(Geom::Empty);
+                }
+                Err(e) => return Err(e),
+            };
             let faces = match stmt.index_lists("faces", Some(1))? {
                 Some(f) => f,
-                None => stmt
-                    .index_lists("triangles", None)?
-                    .ok_or_else(|| stmt.error("'faces': missing"))?,
+                None => match stmt.index_lists("triangles", None)? {
+                    Some(f) => f,
+                    None => {
+                        // OpenSCAD renders a polyhedron without faces as nothing.
+                        ctx.warn(stmt, "'faces' is undef: the object is skipped");
+                        return Ok(Geom::Empty);
+                    }
+                },
             };
             // OpenSCAD lists faces clockwise seen from outside; the kernel counter-clockwise.
             let faces = faces
@@ -404,6 +417,14 @@ fn node(
                 return Ok(Geom::Empty);
             };
             let h = stmt.num("height", Some(0), 100.0)?;
+            if h <= 0.0 {
+                // OpenSCAD makes nothing of a height of zero or less.
+                ctx.warn(
+                    stmt,
+                    format!("height = {h} is not positive: the object is empty"),
+                );
+                return Ok(Geom::Empty);
+            }
             let twist = stmt.num("twist", None, 0.0)?;
             let scale = stmt.size2("scale", None, 1.0)?;
             let centred = stmt.flag("center", None, false)?;
@@ -423,9 +444,36 @@ fn node(
             // As in OpenSCAD: at most a full turn either way; a negative angle sweeps clockwise
             // (the mirror image in y of the counter-clockwise sweep).
             let angle = stmt.num("angle", None, 360.0)?.clamp(-360.0, 360.0);
-            let s = sweep(stmt, &flat, faceted, |p| {
+            if angle == 0.0 {
+                // OpenSCAD sweeps nothing.
+                ctx.warn(stmt, "angle = 0: the object is empty");
+                return Ok(Geom::Empty);
+            }
+            // OpenSCAD's rule: the profile lies on one side of the axis. A profile at x ≤ 0
+            // sweeps the mirror image of its mirror (x ↦ -x) turned half a turn: a point at
+            // -x turned by θ lies where the point at x turned by θ + 180° does.
+            let (lo, hi) = x_range(stmt, &flat, faceted)?;
+            if lo < 0.0 && hi > 0.0 {
+                ctx.warn(
+                    stmt,
+                    format!(
+                        "all points for rotate_extrude() must have the same X coordinate sign \
+                         (range is {lo:.2} -> {hi:.2}): the object is skipped"
+                    ),
+                );
+                return Ok(Geom::Empty);
+            }
+            let mirrored = lo < 0.0;
+            let mut flat = flat;
+            if mirrored {
+                flat.transform([[-1.0, 0.0, 0.0], [0.0, 1.0, 0.0]]);
+            }
+            let mut s = sweep(stmt, &flat, faceted, |p| {
                 Revolve::new(p, angle.abs()).map(|r| Primitive::Revolve(Arc::new(r)))
             })?;
+            if mirrored {
+                s = s.rotate(DVec3::Z, 180.0);
+            }
             Ok(Geom::Solid(if angle < 0.0 {
                 s.scale(DVec3::new(1.0, -1.0, 1.0))
             } else {
@@ -534,6 +582,31 @@ pub(super) fn sweep<E: std::fmt::Display>(
             }
             Op2::Intersection(_) => Solid::intersection_all(parts),
             _ => Solid::union_all(parts),
+        },
+    )
+}
+
+/// The range of x a 2D geometry can reach: its leaves' profile bounds, combined by its Booleans
+/// (a difference within its first operand, an intersection within every operand).
+fn x_range(stmt: &Stmt, flat: &Flat, faceted: bool) -> Result<(f64, f64), CsgError> {
+    flat.evaluate(
+        |leaf| {
+            let p = profile(leaf, faceted).map_err(|e| stmt.error(format!("profile: {e}")))?;
+            let (lo, hi) = p.bounds();
+            Ok((lo.x, hi.x))
+        },
+        |op, parts| match op {
+            Op2::Difference(_) => parts[0],
+            Op2::Intersection(_) => parts
+                .into_iter()
+                .fold((f64::NEG_INFINITY, f64::INFINITY), |a, b| {
+                    (a.0.max(b.0), a.1.min(b.1))
+                }),
+            _ => parts
+                .into_iter()
+                .fold((f64::INFINITY, f64::NEG_INFINITY), |a, b| {
+                    (a.0.min(b.0), a.1.max(b.1))
+                }),
         },
     )
 }
@@ -860,7 +933,8 @@ pub(super) fn mesh_of(
 ) -> Result<IndexedMesh, CsgError> {
     solid.validate().map_err(|e| stmt.error(e.to_string()))?;
     let bounds = solid.bbox();
-    if bounds.is_empty() {
+    // A box without volume (operands that only touch) holds no solid.
+    if bounds.is_empty() || (bounds.max - bounds.min).min_element() <= 0.0 {
         return Ok(IndexedMesh::default());
     }
     let spec = GridSpec::for_bounds(&bounds, resolution)

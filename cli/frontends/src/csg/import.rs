@@ -1,8 +1,8 @@
-//! `import(file = …)`: mesh files (`.stl`, `.off`, `.obj`, `.ply`) as 3D solids bounded by the
+//! `import(file = …)`: mesh files (`.stl`, `.off`, `.obj`, `.ply`, `.3mf`) as 3D solids bounded by the
 //! mesh, and `.dxf` drawings as 2D regions ([`super::dxf`]). The path is relative to the `.csg`
 //! file's folder and read through the caller's [`MeshResolver`], so the confinement rules of
 //! `solidkit_kernel::files` (and `--allow-path`) apply. As in OpenSCAD 2021.01, `layer`, `origin`
-//! and `scale` apply to DXF only. Other formats (`.svg`, `.3mf`, `.amf`) are errors.
+//! and `scale` apply to DXF only. Other formats (`.svg`, `.amf`) are errors.
 
 use super::dxf::{self, DxfOptions};
 use super::error::CsgError;
@@ -10,7 +10,11 @@ use super::flat::{Flat, Leaf2};
 use super::parser::{Stmt, Value};
 use glam::DVec2;
 use solidkit_kernel::Solid;
-use solidkit_kernel::primitive::{MeshResolver, MeshSolid, Primitive};
+use solidkit_kernel::files::FileError;
+use solidkit_kernel::primitive::{
+    MeshResolver, MeshSolid, MeshSolidError, Primitive, ResolveError,
+};
+use solidkit_meshing::io::MeshIoError;
 
 /// What an `import` gives.
 #[derive(Debug)]
@@ -29,6 +33,24 @@ pub fn string_arg<'a>(stmt: &'a Stmt, name: &str, position: Option<usize>) -> Op
     }
 }
 
+/// True when a resolver's error is a file that does not exist (not one refused by the
+/// confinement rules, unreadable or malformed: those stay errors).
+fn missing(error: &ResolveError) -> bool {
+    let io = match error.inner().downcast_ref::<MeshIoError>() {
+        Some(MeshIoError::File(FileError::Io { source, .. }) | MeshIoError::Io { source, .. }) => {
+            Some(source)
+        }
+        _ => error
+            .inner()
+            .downcast_ref::<FileError>()
+            .and_then(|e| match e {
+                FileError::Io { source, .. } => Some(source),
+                _ => None,
+            }),
+    };
+    io.is_some_and(|e| e.kind() == std::io::ErrorKind::NotFound)
+}
+
 /// Reads the file of an `import` statement; `warn` receives one line per thing skipped.
 pub fn import(
     stmt: &Stmt,
@@ -44,14 +66,24 @@ pub fn import(
         .map(str::to_ascii_lowercase)
         .unwrap_or_default();
     match ext.as_str() {
-        "stl" | "off" | "obj" | "ply" => {
-            let mesh = MeshSolid::from_file(path, files).map_err(|e| stmt.error(e.to_string()))?;
-            Ok(Imported::Solid(Solid::primitive(Primitive::Mesh(mesh))))
-        }
+        "stl" | "off" | "obj" | "ply" | "3mf" => match MeshSolid::from_file(path, files) {
+            Ok(mesh) => Ok(Imported::Solid(Solid::primitive(Primitive::Mesh(mesh)))),
+            // OpenSCAD warns about a file it cannot open and imports nothing.
+            Err(MeshSolidError::Load { error, .. }) if missing(&error) => {
+                warn(format!("{error}: the import is empty"));
+                Ok(Imported::Flat(None))
+            }
+            Err(e) => Err(stmt.error(e.to_string())),
+        },
         "dxf" => {
-            let bytes = files
-                .read_file(path)
-                .map_err(|e| stmt.error(e.to_string()))?;
+            let bytes = match files.read_file(path) {
+                Ok(b) => b,
+                Err(error) if missing(&error) => {
+                    warn(format!("{error}: the import is empty"));
+                    return Ok(Imported::Flat(None));
+                }
+                Err(e) => return Err(stmt.error(e.to_string())),
+            };
             let text = String::from_utf8_lossy(&bytes);
             let origin = stmt.size2("origin", None, 0.0)?;
             let scale = stmt.num("scale", None, 1.0)?;
@@ -75,7 +107,7 @@ pub fn import(
             )))))
         }
         other => Err(stmt.error(format!(
-            "'{path}': .{other} files are not read (supported: .stl, .off, .obj, .ply, .dxf)"
+            "'{path}': .{other} files are not read (supported: .stl, .off, .obj, .ply, .3mf, .dxf)"
         ))),
     }
 }

@@ -69,6 +69,8 @@ mod tests;
 #[cfg(test)]
 mod tests_color;
 #[cfg(test)]
+mod tests_lenient;
+#[cfg(test)]
 mod tests_projection;
 #[cfg(test)]
 mod tests_resize;
