@@ -9,7 +9,10 @@ use glam::DVec3;
 use serde_json::json;
 use solidkit_kernel::Aabb;
 use solidkit_meshing::ReportOptions;
-use solidkit_meshing::io::{MeshFormat, WriteOptions, write_colored_mesh_with};
+use solidkit_meshing::io::{
+    MeshFormat, WriteOptions, is_single_precision, single_precision_collisions,
+    write_colored_mesh_with,
+};
 use solidkit_meshing::pipeline::{Domain, MeshOptions, PipelineError, Prepared, warnings};
 use solidkit_meshing::refine::RefineOptions;
 use std::time::Instant;
@@ -92,6 +95,20 @@ pub fn run(a: &MeshArgs) -> Result<u8> {
     } else {
         meshed.face_colors(&solid)
     };
+    // Single-precision formats can fold distinct vertices together: say so, with the remedy.
+    if let Some(out) = a.output.as_deref()
+        && MeshFormat::from_path(out).is_ok_and(is_single_precision)
+    {
+        let n = single_precision_collisions(mesh);
+        if n > 0 {
+            let w = format!(
+                "{input}: {n} vertices fall on another vertex when rounded to the 32-bit floats of {}: read back, triangles there are degenerate or edges non-manifold (.ply, .obj, .off and .3mf keep double precision)",
+                out.display()
+            );
+            crate::output::errln!("warning: {}", crate::escape::one_line(&w));
+            warnings.push(w);
+        }
+    }
     let write = |out: &std::path::Path| {
         write_colored_mesh_with(out, mesh, colors.as_ref(), &WriteOptions::default())
     };

@@ -39,6 +39,7 @@ mod ply_scalars;
 mod polygon;
 mod polygon_mesh;
 mod resolver;
+mod single_precision;
 mod stl;
 mod stored;
 mod text;
@@ -76,6 +77,7 @@ pub use polygon_mesh::{
     write_polygon_mesh_with,
 };
 pub use resolver::FileMeshResolver;
+pub use single_precision::{is_single_precision, single_precision_collisions};
 pub use stl::binary_records as stl_binary_records;
 pub use stored::{encode_mesh, stored_mesh};
 pub use threemf::MODEL_PATH as THREEMF_MODEL_PATH;
