@@ -96,7 +96,8 @@ fn unsupported_construct_is_located() {
     );
 }
 
-fn warned(text: &str, facets: Facets) -> (Solid, Vec<String>) {
+/// The solid of `text` (validated) and its warnings as text.
+pub(super) fn warned(text: &str, facets: Facets) -> (Solid, Vec<String>) {
     let (s, w) = import_with_warnings(text, facets, &solidkit_kernel::primitive::NoMeshResolver)
         .unwrap_or_else(|e| panic!("{text}: {e}"));
     s.validate().unwrap_or_else(|e| panic!("{text}: {e}"));

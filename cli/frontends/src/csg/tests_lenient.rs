@@ -3,20 +3,12 @@
 //! and the rest of the model is kept; a profile on the negative side of the axis is swept as
 //! OpenSCAD sweeps it; `$fn = inf` means three fragments.
 
-use super::{Facets, import_with_warnings};
+use super::Facets;
+use super::tests::warned;
 use glam::DVec3;
-use solidkit_kernel::Solid;
-use solidkit_kernel::primitive::NoMeshResolver;
 use solidkit_kernel::primitive::sweep::signed_volume;
 use solidkit_tests::{mesh, rel_err};
 use std::f64::consts::PI;
-
-fn warned(text: &str, facets: Facets) -> (Solid, Vec<String>) {
-    let (s, w) = import_with_warnings(text, facets, &NoMeshResolver)
-        .unwrap_or_else(|e| panic!("{text}: {e}"));
-    s.validate().unwrap_or_else(|e| panic!("{text}: {e}"));
-    (s, w.iter().map(|w| w.to_string()).collect())
-}
 
 /// Parts OpenSCAD renders as nothing: a polyhedron without faces or with points that are not
 /// 3-vectors, an extrusion of height 0 or less, a sweep of angle 0, and a profile that crosses
