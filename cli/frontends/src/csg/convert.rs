@@ -449,9 +449,9 @@ fn node(
                 ctx.warn(stmt, "angle = 0: the object is empty");
                 return Ok(Geom::Empty);
             }
-            // OpenSCAD's rule: the profile lies on one side of the axis. A profile at x ≤ 0
-            // sweeps the mirror image of its mirror (x ↦ -x) turned half a turn: a point at
-            // -x turned by θ lies where the point at x turned by θ + 180° does.
+            // OpenSCAD's rule: the profile lies on one side of the axis. A profile at x ≤ 0 is
+            // swept as its mirror image (x ↦ -x), turned half a turn about z: a point at -x
+            // turned by θ lies where the point at x turned by θ + 180° does.
             let (lo, hi) = x_range(stmt, &flat, faceted)?;
             if lo < 0.0 && hi > 0.0 {
                 ctx.warn(
