@@ -86,8 +86,9 @@ pub(crate) fn is_usable(tri: &[u32; 3], vertex_count: usize) -> bool {
 /// True when two mesh triangles (vertex indices `ti`, `tj`, distinct within each, and their
 /// corners) meet beyond the vertices they share, by the same exact test as
 /// [`self_intersections`]. An exactly collinear triangle counts as meeting (a certificate built
-/// on this test must not pass it). For local tests of a few triangles (one marching-cubes cell)
-/// without the search.
+/// on this test must not pass it). The exhaustive table test's pair test; [`none_meet`] is the
+/// same test over the pairs of one marching-cubes cell.
+#[cfg(test)]
 pub(crate) fn pair_meets(ti: [u32; 3], pi: [DVec3; 3], tj: [u32; 3], pj: [DVec3; 3]) -> bool {
     match (Projection::of(pi), Projection::of(pj)) {
         (Some(a), Some(b)) => {
@@ -95,6 +96,29 @@ pub(crate) fn pair_meets(ti: [u32; 3], pi: [DVec3; 3], tj: [u32; 3], pj: [DVec3;
         }
         _ => true,
     }
+}
+
+/// True when no two of the triangles `tris` (vertex indices, distinct within each, and corners)
+/// meet beyond the vertices they share, by the same exact test as [`self_intersections`]
+/// (without the search) for every pair: each triangle's projection is found once, and pairs
+/// whose bounding boxes are apart along an axis are skipped (closed triangles in disjoint closed
+/// boxes cannot meet). An exactly collinear triangle fails it.
+pub(crate) fn none_meet(tris: &[([u32; 3], [DVec3; 3])]) -> bool {
+    let mut prepared = Vec::with_capacity(tris.len());
+    for &(ids, p) in tris {
+        let Some(tri) = Tri::new(p) else {
+            return false;
+        };
+        let lo = p[0].min(p[1]).min(p[2]);
+        let hi = p[0].max(p[1]).max(p[2]);
+        prepared.push((ids, tri, lo, hi));
+    }
+    prepared.iter().enumerate().all(|(i, (ia, a, alo, ahi))| {
+        prepared[i + 1..].iter().all(|(ib, b, blo, bhi)| {
+            let apart = ahi.cmplt(*blo).any() || bhi.cmplt(*alo).any();
+            apart || !meet_beyond_shared(*ia, a, *ib, b)
+        })
+    })
 }
 
 /// The self-intersections of `mesh`, with at most `limit` example pairs. Fails only when a vertex

@@ -471,3 +471,45 @@ fn usable_requires_range_and_distinct_indices() {
     assert!(!is_usable(&[0, 1, 1], 3));
     assert!(!is_usable(&[2, 1, 2], 3));
 }
+
+/// [`none_meet`] (projections once, boxes apart skipped) says what testing every pair with
+/// [`pair_meets`] says, on small sets of triangles over a shared vertex pool: some share
+/// vertices, some lie apart, some cross.
+#[test]
+fn none_meet_agrees_with_every_pair_tested() {
+    let mut rng = Xorshift(0x5eed_cafe_f00d_1234);
+    let (mut disjoint, mut meeting) = (0, 0);
+    for _ in 0..4000 {
+        let pool: Vec<DVec3> = (0..8).map(|_| rng.point() * 0.5).collect();
+        let count = 2 + (rng.unit() * 5.0) as usize;
+        let mut tris = Vec::new();
+        while tris.len() < count {
+            let ids = [0, 1, 2].map(|_| (rng.unit() * 8.0) as u32);
+            if ids[0] != ids[1] && ids[1] != ids[2] && ids[0] != ids[2] {
+                let shift = if rng.unit() < 0.5 {
+                    rng.point()
+                } else {
+                    DVec3::ZERO
+                };
+                // A shifted triangle keeps its ids but not its corners: make its ids its own.
+                let ids = if shift == DVec3::ZERO {
+                    ids
+                } else {
+                    ids.map(|i| i + 100 * (tris.len() as u32 + 1))
+                };
+                let p = [0, 1, 2].map(|k| pool[(ids[k] % 100) as usize] + shift);
+                tris.push((ids, p));
+            }
+        }
+        let every_pair = (0..tris.len()).all(|i| {
+            (i + 1..tris.len()).all(|j| !pair_meets(tris[i].0, tris[i].1, tris[j].0, tris[j].1))
+        });
+        assert_eq!(none_meet(&tris), every_pair, "{tris:?}");
+        if every_pair {
+            disjoint += 1;
+        } else {
+            meeting += 1;
+        }
+    }
+    assert!(disjoint > 200 && meeting > 200, "{disjoint} {meeting}");
+}

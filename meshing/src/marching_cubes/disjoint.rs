@@ -53,7 +53,7 @@
 
 use super::table::CENTRE;
 use crate::grid::GridSpec;
-use crate::intersect::pair_meets;
+use crate::intersect::none_meet;
 use glam::DVec3;
 
 /// Cells whose configuration has at most this many triangles need no test (see point 4).
@@ -75,13 +75,19 @@ pub fn planes_distinct(spec: &GridSpec) -> bool {
 
 /// True when no two of one cell's triangles (`tris`, as cell edge numbers or [`CENTRE`]) meet
 /// beyond the vertices they share, with the centre at `centre` and the crossing of edge `e` at
-/// `crossing(e)` (final positions), by the exact test of [`crate::intersect`].
+/// `crossing(e)` (final positions), by the exact test of [`crate::intersect`]
+/// ([`crate::intersect::none_meet`]: each crossing computed once).
 pub fn cell_disjoint(tris: &[[u8; 3]], centre: DVec3, crossing: impl Fn(u8) -> DVec3) -> bool {
-    let corners = |t: [u8; 3]| t.map(|e| if e == CENTRE { centre } else { crossing(e) });
-    let ids = |t: [u8; 3]| t.map(u32::from);
-    tris.iter().enumerate().all(|(i, &a)| {
-        tris[i + 1..]
-            .iter()
-            .all(|&b| !pair_meets(ids(a), corners(a), ids(b), corners(b)))
-    })
+    let mut at = [None::<DVec3>; 12];
+    let mut point = |e: u8| {
+        if e == CENTRE {
+            return centre;
+        }
+        *at[usize::from(e)].get_or_insert_with(|| crossing(e))
+    };
+    let tris: Vec<([u32; 3], [DVec3; 3])> = tris
+        .iter()
+        .map(|t| (t.map(u32::from), t.map(&mut point)))
+        .collect();
+    none_meet(&tris)
 }
