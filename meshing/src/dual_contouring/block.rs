@@ -7,7 +7,8 @@
 //! axis). Edges on block faces are searched by both blocks, with programs that agree there, so
 //! both see the same crossings.
 
-use super::certify::{SEPARATOR_MARGIN, VERTEX_MARGIN};
+use super::certify::SEPARATOR_MARGIN;
+use super::claim::vertex_margin;
 use super::crossing::{
     CrossingScratch, EdgeQuery, GROUP_PRUNE_LEN, GroupScratch, refine, refine_grouped,
 };
@@ -213,6 +214,7 @@ pub(crate) fn build<F: Evaluator>(
     };
     let corner = [0, 1, nx, nx + 1, nxy, nxy + 1, nxy + nx, nxy + nx + 1];
     let half = 0.5 * spec.cell;
+    let inner = DVec3::splat(vertex_margin(spec));
     let mc = case_table();
     let rule = Pinch {
         program: root,
@@ -250,7 +252,6 @@ pub(crate) fn build<F: Evaluator>(
                 let lo = point([i, j, k]);
                 let hi = lo + DVec3::splat(spec.cell);
                 let patches = &cell.edges;
-                let inner = DVec3::splat(VERTEX_MARGIN * spec.cell);
                 for (pi, patch) in patches.iter().enumerate() {
                     let mut q = Qef::new(lo + half);
                     let (mut plo, mut phi) = (hi, lo);

@@ -33,12 +33,30 @@ pub(crate) fn claim(
     tolerance.is_none() && unreachable == 0 && dropped == 0 && rounding_below_margins(spec)
 }
 
+/// The grid's largest coordinate magnitude.
+fn largest_coordinate(spec: &GridSpec) -> f64 {
+    let far = spec.point(spec.cells[0], spec.cells[1], spec.cells[2]);
+    spec.origin.abs().max(far.abs()).max_element()
+}
+
 /// `64 · ulp(M) ≤ EPS · cell` for the grid's largest coordinate `M`.
 pub(crate) fn rounding_below_margins(spec: &GridSpec) -> bool {
-    let far = spec.point(spec.cells[0], spec.cells[1], spec.cells[2]);
-    let m = spec.origin.abs().max(far.abs()).max_element();
+    let m = largest_coordinate(spec);
     let ulp = m.max(f64::MIN_POSITIVE) * f64::EPSILON;
     spec.cell.is_finite() && m.is_finite() && 64.0 * ulp <= EPS * spec.cell
+}
+
+/// How far (model units) a patch vertex is kept inside its cell: [`VERTEX_MARGIN`] cells, raised
+/// to two single-precision steps of the grid's largest coordinate while that stays below half
+/// of [`CROSSING_MARGIN`], so that the vertices of two cells beside one sample plane stay
+/// distinct when a file stores 32-bit floats (STL, GLB). Without it a sharp feature on a sample
+/// plane put the vertices of the cells on both sides 2 · 10⁻⁵ cells apart: one point in an STL,
+/// and the file read back was not manifold. The margin only grows, so the argument's premises
+/// (vertices at least [`VERTEX_MARGIN`] inside, below the crossing margin) hold as before.
+pub(crate) fn vertex_margin(spec: &GridSpec) -> f64 {
+    let step = 2.0 * largest_coordinate(spec) * f64::from(f32::EPSILON);
+    let cap = 0.5 * CROSSING_MARGIN * spec.cell;
+    (VERTEX_MARGIN * spec.cell).max(if step.is_finite() { step.min(cap) } else { 0.0 })
 }
 
 // The margins nest as the argument needs: rounding < EPS < vertex margin < crossing margin.

@@ -76,7 +76,7 @@ pub fn planes_distinct(spec: &GridSpec) -> bool {
 /// True when no two of one cell's triangles (`tris`, as cell edge numbers or [`CENTRE`]) meet
 /// beyond the vertices they share, with the centre at `centre` and the crossing of edge `e` at
 /// `crossing(e)` (final positions), by the exact test of [`crate::intersect`]
-/// ([`crate::intersect::none_meet`]: each crossing computed once).
+/// (`intersect::none_meet`: each crossing computed once).
 pub fn cell_disjoint(tris: &[[u8; 3]], centre: DVec3, crossing: impl Fn(u8) -> DVec3) -> bool {
     let mut at = [None::<DVec3>; 12];
     let mut point = |e: u8| {
