@@ -96,6 +96,29 @@ fn revolution_of_an_off_axis_circle_is_a_torus() {
     check("revolve_torus.json", 1, 1, TAU * 1.0 * PI * 0.35 * 0.35);
 }
 
+/// The same torus in six straight steps: a ring of six bent tubes, the volume of Pappus's
+/// theorem with `6 sin 60° = 3√3` for `2π`, and the corners of the hexagonal rings on its
+/// surface.
+#[test]
+fn faceted_revolution_is_a_ring_of_straight_steps() {
+    let exact = 3.0 * 3f64.sqrt() * 1.0 * PI * 0.35 * 0.35;
+    check("revolve_faceted.json", 1, 1, exact);
+    let Primitive::Revolve(r) = root("revolve_faceted.json") else {
+        panic!("not a revolution");
+    };
+    assert_eq!(r.segments(), Some((6, 0.0)));
+    assert!(rel_err(r.volume(), exact) < 1e-12);
+    use solidkit_kernel::primitive::Shape;
+    for j in 0..6 {
+        let a = TAU * f64::from(j) / 6.0;
+        assert!(
+            r.value(DVec3::new(1.35 * a.cos(), 1.35 * a.sin(), 0.0))
+                .abs()
+                < 1e-12
+        );
+    }
+}
+
 #[test]
 fn partial_revolution_is_closed_by_its_end_faces() {
     check(

@@ -468,8 +468,20 @@ fn node(
             if mirrored {
                 flat.transform([[-1.0, 0.0, 0.0], [0.0, 1.0, 0.0]]);
             }
+            // With OpenSCAD's facets a full turn is its straight steps: as many as a circle of
+            // radius max |x| gets, the first stop on the -x axis (OpenSCAD's "legacy" start;
+            // the mirrored case is turned below, as OpenSCAD's rings are). Partial turns stay
+            // smooth.
+            let steps = (faceted && angle.abs() == 360.0)
+                .then(|| stmt.resolution())
+                .transpose()?
+                .map(|res| facets::fragments(hi.max(0.0) - lo.min(0.0), res) as u32);
             let mut s = sweep(stmt, &flat, faceted, |p| {
-                Revolve::new(p, angle.abs()).map(|r| Primitive::Revolve(Arc::new(r)))
+                match steps {
+                    Some(n) => Revolve::faceted(p, n, 180.0),
+                    None => Revolve::new(p, angle.abs()),
+                }
+                .map(|r| Primitive::Revolve(Arc::new(r)))
             })?;
             if mirrored {
                 s = s.rotate(DVec3::Z, 180.0);

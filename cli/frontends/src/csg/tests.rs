@@ -266,6 +266,32 @@ fn zero_scale_extrusion_is_a_pyramid() {
     }
 }
 
+/// `rotate_extrude` under OpenSCAD's facets is its straight steps: a square at x in [20, 30]
+/// swept with `$fn = 5` (the fragments of radius 30) is the prism between two regular pentagons,
+/// volume `5 sin 72° (30² − 20²) / 2 · 10`, and `$fn = 1` gives OpenSCAD's three steps. With
+/// exact primitives the turn stays smooth (`π (30² − 20²) · 10`).
+#[test]
+fn faceted_rotate_extrude_takes_openscad_steps() {
+    let model = |n: u32| {
+        format!(
+            "rotate_extrude(angle = 360, convexity = 2, $fn = {n}, $fa = 12, $fs = 2) \
+             multmatrix([[1, 0, 0, 20], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]) square(size = [10, 10]);"
+        )
+    };
+    let ring = |n: f64| 0.5 * n * (std::f64::consts::TAU / n).sin() * 500.0 * 10.0;
+    for (n, steps) in [(5, 5.0), (1, 3.0), (12, 12.0)] {
+        let (s, w) = warned(&model(n), Facets::OpenScad);
+        assert!(w.is_empty(), "{w:?}");
+        let (m, report) = mesh(&s, 128);
+        assert_eq!((report.boundary_edges, report.shells), (0, 1), "$fn = {n}");
+        let (v, exact) = (signed_volume(&m), ring(steps));
+        assert!(rel_err(v, exact) < 0.01, "$fn = {n}: {v} vs {exact}");
+    }
+    let (s, _) = warned(&model(5), Facets::Exact);
+    let v = signed_volume(&mesh(&s, 128).0);
+    assert!(rel_err(v, PI * 5000.0) < 0.01, "{v}");
+}
+
 /// `hull()` of any children: a difference is meshed and its vertices hulled. The cube with its
 /// top corner octant removed hulls to the cube less the corner tetrahedron (legs 5): 1000 − 125/6.
 #[test]

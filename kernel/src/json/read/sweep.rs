@@ -1,5 +1,6 @@
 //! Reading the sweep family: `extrude` (profile, height, optional twist in degrees and scale),
-//! `revolve` (profile, optional angle in degrees, default 360), `sweep` (profile, path), `loft`
+//! `revolve` (profile, optional angle in degrees, default 360; optional `segments`, a full turn
+//! in that many straight steps, the first at `start` degrees, default 0), `sweep` (profile, path), `loft`
 //! (bottom and top profiles, height), `ruled` (bottom and top curves) and `ruled_surface` (first
 //! and second curves, optional thickness and samples).
 //!
@@ -51,8 +52,31 @@ impl Params<'_, '_> {
             "revolve" => {
                 let profile = self.sweep_profile("profile")?;
                 let angle = self.sweep_optional("angle", 360.0)?;
-                let r = Revolve::new(profile, angle).map_err(located)?;
-                (Primitive::Revolve(Arc::new(r)), &["profile", "angle"])
+                let r = match super::find(self.entries, "segments") {
+                    None => Revolve::new(profile, angle),
+                    Some(i) => {
+                        let n = self.number_at(i, "segments")?;
+                        if angle != 360.0 {
+                            return Err(self.sweep_error(SweepError::Invalid {
+                                parameter: "segments",
+                                problem: "a faceted revolution is a full turn (angle 360)",
+                            }));
+                        }
+                        if n.fract() != 0.0 || !(3.0..=65536.0).contains(&n) {
+                            return Err(self.sweep_error(SweepError::Invalid {
+                                parameter: "segments",
+                                problem: "expected a whole number of steps from 3 to 65536",
+                            }));
+                        }
+                        let start = self.sweep_optional("start", 0.0)?;
+                        Revolve::faceted(profile, n as u32, start)
+                    }
+                }
+                .map_err(located)?;
+                (
+                    Primitive::Revolve(Arc::new(r)),
+                    &["profile", "angle", "segments", "start"],
+                )
             }
             "sweep" => {
                 let s = Sweep::new(self.sweep_profile("profile")?, self.sweep_curve("path")?)

@@ -113,8 +113,12 @@ pub(super) fn extrude(e: &Extrude) -> String {
 
 /// The members of a `revolve` node.
 pub(super) fn revolve(r: &Revolve) -> String {
+    let steps = match r.segments() {
+        Some((n, start)) => format!(", \"segments\": {n}, \"start\": {}", num(start)),
+        None => String::new(),
+    };
     format!(
-        "\"profile\": {}, \"angle\": {}",
+        "\"profile\": {}, \"angle\": {}{steps}",
         profile(r.profile()),
         num(r.angle())
     )

@@ -9,6 +9,18 @@
 //! distance of `(ρ, z)`, and inside the solid the end faces compete. Outside the wedge the nearest
 //! copy is the nearer end face, at distance `√(b² + max(d(a, z), 0)²)` with `(a, b)` the in-plane
 //! and out-of-plane coordinates. So `field_error() = 0` and the Lipschitz constant is 1.
+//!
+//! Faceted full turns ([`Revolve::faceted`], OpenSCAD's `rotate_extrude` with `n` fragments):
+//! the profile is swept in `n` straight steps between the half-planes at angles
+//! `start + 2πj/n`, so every circle the profile's points travel becomes the regular `n`-gon
+//! inscribed in it (a chord between two consecutive copies of a point is parallel to the chord
+//! of any other point, so each step's quads are planar trapezoids). A point `q` in the sector
+//! with unit bisector `u` lies on the `n`-gon of circumradius `ρ_n(q) = (q·u) / cos(π/n)`, so
+//! the solid is `{(ρ_n(q), z) ∈ profile}`. `ρ_n` is continuous and piecewise linear with gradient
+//! norm `1 / cos(π/n)`, so the field `cos(π/n) · d(ρ_n, z)` has the exact zero set and a
+//! gradient of norm at most 1 (a distance bound). The volume is `n sin(2π/n) · A · x̄` (the
+//! `n`-gon of circumradius `ρ` has area `(n/2) ρ² sin(2π/n)`), against `2π · A · x̄` for the smooth
+//! turn.
 
 use super::error::{SweepError, invalid};
 use crate::primitive::{PrimitiveError, Shape, lipschitz_interval};
@@ -24,7 +36,24 @@ pub struct Revolve {
     angle: f64,
     /// The angle in radians.
     alpha: f64,
+    /// The straight steps of a faceted full turn.
+    facets: Option<Facets>,
 }
+
+/// The steps of a faceted turn (see the module docs).
+#[derive(Debug, Clone, Copy, PartialEq)]
+struct Facets {
+    /// Number of steps `n ≥ 3`.
+    n: u32,
+    /// Angle of the first half-plane the profile stops at, radians.
+    start: f64,
+    /// `cos(π/n)`: the inradius of the unit `n`-gon.
+    inradius: f64,
+}
+
+/// The most steps a faceted turn may take (a bound against hostile input; a turn that fine is
+/// indistinguishable from the smooth one at any grid).
+const MAX_SEGMENTS: u32 = 1 << 16;
 
 impl Revolve {
     /// The revolution of `profile` (in the half-plane x ≥ 0 of its plane) by `angle` degrees,
@@ -47,7 +76,36 @@ impl Revolve {
             profile,
             angle,
             alpha: angle.to_radians(),
+            facets: None,
         })
+    }
+
+    /// A full turn of `profile` in `segments` straight steps (3 to 65536),
+    /// stopping at the half-planes at `start + 360·j/segments` degrees: the faceted solid
+    /// OpenSCAD's `rotate_extrude` makes (see the module docs).
+    pub fn faceted(profile: Profile, segments: u32, start: f64) -> Result<Revolve, SweepError> {
+        if !(3..=MAX_SEGMENTS).contains(&segments) {
+            return Err(invalid(
+                "segments",
+                "expected a whole number of steps from 3 to 65536",
+            ));
+        }
+        if !start.is_finite() {
+            return Err(invalid("start", "expected finite degrees"));
+        }
+        let mut r = Revolve::new(profile, 360.0)?;
+        r.facets = Some(Facets {
+            n: segments,
+            start: start.rem_euclid(360.0).to_radians(),
+            inradius: (std::f64::consts::PI / f64::from(segments)).cos(),
+        });
+        Ok(r)
+    }
+
+    /// The number of straight steps of a faceted turn and the angle of its first stop in
+    /// degrees; `None` for a smooth revolution.
+    pub fn segments(&self) -> Option<(u32, f64)> {
+        self.facets.map(|f| (f.n, f.start.to_degrees()))
     }
 
     /// The profile (x: distance from the axis, y: height).
@@ -70,10 +128,15 @@ impl Revolve {
         0.0
     }
 
-    /// Exact volume by Pappus's theorem: swept angle × centroid distance × area.
+    /// Exact volume by Pappus's theorem: swept angle × centroid distance × area (for a faceted
+    /// turn, `n sin(2π/n)` in place of the angle).
     pub fn volume(&self) -> f64 {
         let (area, centroid) = self.profile.area_centroid();
-        self.alpha * centroid.x * area
+        let turn = match self.facets {
+            Some(f) => f64::from(f.n) * (TAU / f64::from(f.n)).sin(),
+            None => self.alpha,
+        };
+        turn * centroid.x * area
     }
 
     /// The profile distance in the meridian half-plane, ignoring profile edges on the axis (they
@@ -109,8 +172,26 @@ impl Revolve {
         (e, grad)
     }
 
+    /// Field value and gradient of a faceted turn: the profile distance at the `n`-gon radius
+    /// `ρ_n`, scaled by the inradius (see the module docs).
+    fn eval_faceted(&self, p: DVec3, f: Facets) -> (f64, DVec3) {
+        let step = TAU / f64::from(f.n);
+        let phi = p.y.atan2(p.x) - f.start;
+        let mid = f.start + ((phi / step).floor() + 0.5) * step;
+        let (s, c) = mid.sin_cos();
+        let rho = (p.x * c + p.y * s) / f.inradius;
+        let (d, g) = self.meridian(DVec2::new(rho, p.z));
+        (
+            d * f.inradius,
+            DVec3::new(c * g.x, s * g.x, f.inradius * g.y),
+        )
+    }
+
     /// Field value and gradient.
     fn eval(&self, p: DVec3) -> (f64, DVec3) {
+        if let Some(f) = self.facets {
+            return self.eval_faceted(p, f);
+        }
         let rho = (p.x * p.x + p.y * p.y).sqrt();
         let radial = if rho > 0.0 {
             DVec3::new(p.x / rho, p.y / rho, 0.0)
@@ -184,6 +265,12 @@ impl Shape for Revolve {
             DVec3::new(mn.x - eps, mn.y - eps, lo.y),
             DVec3::new(mx.x + eps, mx.y + eps, hi.y),
         )
+    }
+    fn bbox_at(&self, level: f64) -> Aabb {
+        // A faceted turn's value at `q` is `cos(π/n)` times the meridian distance of
+        // `(ρ_n, z)`, and `|q| ≤ ρ_n`: within `level / cos(π/n)` of the profile's box of radii.
+        let grow = self.facets.map_or(level, |f| level / f.inradius);
+        self.bbox().expanded(grow)
     }
     fn validate(&self) -> Result<(), PrimitiveError> {
         // Checked when built: a `Revolve` is always valid.

@@ -25,10 +25,14 @@ fn loops_of(profile: &Profile, segments: usize) -> (Vec<Vec<DVec2>>, Vec<usize>)
 
 impl Revolve {
     /// The revolution's mesh with `steps` angular stations (`steps` distinct angles for a full
-    /// turn, `steps` including both ends for a partial one). Profile corners on the axis become
-    /// poles.
+    /// turn, `steps` including both ends for a partial one; a faceted turn has its own stations,
+    /// which replace `steps`). Profile corners on the axis become poles.
     pub fn tessellate(&self, segments: usize, steps: usize) -> Result<IndexedMesh, SweepError> {
         count("segments", segments, 3)?;
+        let (steps, start) = match self.segments() {
+            Some((n, start)) => (n as usize, start.to_radians()),
+            None => (steps, 0.0),
+        };
         count("steps", steps, if self.is_full() { 3 } else { 2 })?;
         let (loops, sizes) = loops_of(self.profile(), segments);
         let points: Vec<DVec2> = loops.iter().flatten().copied().collect();
@@ -36,7 +40,7 @@ impl Revolve {
         let alpha = self.angle().to_radians();
         let angle = |s: usize| {
             if full {
-                alpha * s as f64 / steps as f64
+                start + alpha * s as f64 / steps as f64
             } else {
                 alpha * s as f64 / (steps - 1) as f64
             }

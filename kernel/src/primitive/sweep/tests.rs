@@ -755,3 +755,62 @@ fn json_reads_defaults_and_locates_errors() {
         "{e}"
     );
 }
+
+/// A faceted full turn (OpenSCAD's `rotate_extrude` in `n` steps): a rectangle touching the axis
+/// gives the regular `n`-gon prism (inside exactly where the polygon test says), a circle gives
+/// a faceted torus whose ring corners lie on the surface; the field conforms (Lipschitz 1,
+/// sound intervals) and the volume is `n sin(2π/n) A x̄`, with `n = 3` and a turned start.
+#[test]
+fn faceted_turns_are_regular_polygon_sweeps() {
+    use std::f64::consts::{PI, TAU};
+    let rect = Profile::Rectangle(crate::profile::Rectangle {
+        center: DVec2::new(0.5, 0.0),
+        size: DVec2::new(1.0, 1.0),
+    });
+    for (n, start) in [(3u32, 180.0f64), (5, 0.0), (12, 37.0)] {
+        let prism = Revolve::faceted(rect.clone(), n, start).unwrap();
+        let a0 = start.to_radians();
+        let corners: Vec<DVec2> = (0..n)
+            .map(|j| {
+                let a = a0 + TAU * f64::from(j) / f64::from(n);
+                DVec2::new(a.cos(), a.sin())
+            })
+            .collect();
+        // Inside the convex n-gon: on the inner side of every edge.
+        let in_polygon = |q: DVec2| {
+            (0..corners.len()).all(|j| {
+                let (a, b) = (corners[j], corners[(j + 1) % corners.len()]);
+                (b - a).perp_dot(q - a) > 0.0
+            })
+        };
+        let mut rng = Rng::new(u64::from(n));
+        for _ in 0..4000 {
+            let p = rng.vec(1.2);
+            let v = prism.value(p);
+            let inside = in_polygon(DVec2::new(p.x, p.y)) && p.z.abs() < 0.5;
+            if v.abs() > 1e-9 {
+                assert_eq!(v < 0.0, inside, "n = {n}, {p}");
+            }
+        }
+        for c in &corners {
+            assert!(prism.value(DVec3::new(c.x, c.y, 0.2)).abs() < 1e-12);
+        }
+        let exact = 0.5 * f64::from(n) * (TAU / f64::from(n)).sin();
+        assert!((prism.volume() - exact).abs() < 1e-12, "{n}");
+        check_shape(&prism, 1.5);
+        assert_eq!(prism.segments(), Some((n, start)));
+    }
+    let ring = Revolve::faceted(circle_at(DVec2::new(1.0, 0.0), 0.25), 6, 0.0).unwrap();
+    for j in 0..6 {
+        let a = TAU * f64::from(j) / 6.0;
+        let p = DVec3::new(1.25 * a.cos(), 1.25 * a.sin(), 0.0);
+        assert!(ring.value(p).abs() < 1e-12, "{p}");
+    }
+    // Pappus with the hexagon's n sin(2π/n) = 3√3 for the smooth turn's 2π.
+    let expected = 6.0 * (PI / 3.0).sin() * PI * 0.0625;
+    assert!((ring.volume() - expected).abs() < 1e-12);
+    check_shape(&ring, 1.6);
+    for bad in [0u32, 2, 70_000] {
+        assert!(Revolve::faceted(rect.clone(), bad, 0.0).is_err());
+    }
+}
