@@ -104,6 +104,13 @@ pub(super) fn warned(text: &str, facets: Facets) -> (Solid, Vec<String>) {
     (s, w.iter().map(|w| w.to_string()).collect())
 }
 
+/// `text` (parts to skip, then a unit cube) imports as the cube alone, with exactly `warnings`.
+pub(super) fn only_the_cube_is_kept(text: &str, warnings: &[&str]) {
+    let (s, w) = warned(text, Facets::Exact);
+    assert_eq!(s, warned("cube(size = 1, center = true);", Facets::Exact).0);
+    assert_eq!(w, warnings);
+}
+
 /// The same solid as `expected`, with no warnings.
 fn same(text: &str, expected: &str) {
     let (a, w) = warned(text, Facets::Exact);
@@ -156,17 +163,15 @@ fn non_finite_and_undef_values_are_skipped_with_warnings() {
                 polyhedron(points = undef, faces = [[0, 1, 2]], convexity = 1);\n\
                 polygon(points = [[0, 0], [1, nan], [1, 1]]);\n\
                 cube(size = 1, center = true);\n";
-    let (s, w) = warned(text, Facets::Exact);
-    assert_eq!(s, warned("cube(size = 1, center = true);", Facets::Exact).0);
-    assert_eq!(
-        w,
-        [
+    only_the_cube_is_kept(
+        text,
+        &[
             "1:1: a size or point is inf or nan: the object is skipped",
             "2:1: a size or point is inf or nan: the object is skipped",
             "3:1: the transformation matrix contains nan or inf: the object is removed",
             "4:1: 'points' is undef: the object is skipped",
             "5:1: a size or point is inf or nan: the object is skipped",
-        ]
+        ],
     );
     // Everything skipped: the model is empty, an error.
     assert!(matches!(

@@ -4,7 +4,7 @@
 //! OpenSCAD sweeps it; `$fn = inf` means three fragments.
 
 use super::Facets;
-use super::tests::warned;
+use super::tests::{only_the_cube_is_kept, warned};
 use glam::DVec3;
 use solidkit_kernel::primitive::sweep::signed_volume;
 use solidkit_tests::{mesh, rel_err};
@@ -22,18 +22,16 @@ fn parts_openscad_renders_as_nothing_are_skipped_with_warnings() {
                 rotate_extrude(angle = 0) multmatrix([[1, 0, 0, 5], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]) square(size = [1, 1]);\n\
                 rotate_extrude(angle = 360) multmatrix([[1, 0, 0, -0.5], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]) square(size = [1, 1]);\n\
                 cube(size = 1, center = true);\n";
-    let (s, w) = warned(text, Facets::Exact);
-    assert_eq!(s, warned("cube(size = 1, center = true);", Facets::Exact).0);
-    assert_eq!(
-        w,
-        [
+    only_the_cube_is_kept(
+        text,
+        &[
             "1:1: 'faces' is undef: the object is skipped",
             "2:1: 'points': expected a list of points: the object is skipped",
             "3:1: height = 0 is not positive: the object is empty",
             "4:1: height = -2 is not positive: the object is empty",
             "5:1: angle = 0: the object is empty",
             "6:1: all points for rotate_extrude() must have the same X coordinate sign (range is -0.50 -> 0.50): the object is skipped",
-        ]
+        ],
     );
 }
 
