@@ -118,19 +118,25 @@ pub(crate) fn assemble(
         .into_par_iter()
         .enumerate()
         .map_init(
-            || vec![0u32; LOCAL_EDGE_IDS],
+            || Numbers {
+                number: vec![UNKNOWN; LOCAL_EDGE_IDS],
+                written: Vec::new(),
+            },
             |own, (b, t)| {
+                own.clear();
                 let o = &bricks[b];
-                let rows = o.edge_rows.len() - 1;
-                for (r, &base) in bases[b].iter().enumerate().take(rows) {
-                    let (kl, jl) = (r / o.owned[1], r % o.owned[1]);
-                    let start = o.edge_rows[r] as usize;
-                    for (p, e) in o.edges[start..o.edge_rows[r + 1] as usize]
-                        .iter()
-                        .enumerate()
-                    {
-                        let id = local_edge((e.0 >> 2) as usize, jl, kl, (e.0 & 3) as usize);
-                        own[id as usize] = base + p as u32;
+                own.fill(o, &bases[b], [0; 3], o.owned);
+                // The neighbours' edges on the far faces (local coordinate `brick`), copied from
+                // their rows once instead of searched per triangle corner.
+                for code in 1..8usize {
+                    let bit = [0, 1, 2].map(|a| (code >> a) & 1);
+                    let c = [0, 1, 2].map(|a| o.coord[a] + bit[a]);
+                    if (0..3).any(|a| c[a] >= dims[a]) {
+                        continue; // beyond the grid
+                    }
+                    if let Some(n) = index.get(c) {
+                        let span = [0, 1, 2].map(|a| if bit[a] == 1 { 1 } else { o.owned[a] });
+                        own.fill(&bricks[n], &bases[n], bit.map(|x| x * brick), span);
                     }
                 }
                 let mut tris = Vec::with_capacity(t.triangles.len());
@@ -143,16 +149,15 @@ pub(crate) fn assemble(
                                 let first = centre_bases[b][r] - t.centre_rows[r];
                                 return first + u32::from(id - CENTRE_IDS);
                             }
-                            let (l, _) = local_parts(id);
-                            if l[0] < o.owned[0] && l[1] < o.owned[1] && l[2] < o.owned[2] {
-                                own[id as usize]
-                            } else {
-                                neighbour_vertex(b, id, &bricks, &bases, &index, brick, dims)
-                                    .unwrap_or_else(|key| {
-                                        orphans.push(key);
-                                        ORPHAN | (orphans.len() - 1) as u32
-                                    })
+                            let v = own.number[id as usize];
+                            if v != UNKNOWN {
+                                return v;
                             }
+                            neighbour_vertex(b, id, &bricks, &bases, &index, brick, dims)
+                                .unwrap_or_else(|key| {
+                                    orphans.push(key);
+                                    ORPHAN | (orphans.len() - 1) as u32
+                                })
                         })
                     }));
                 }
@@ -205,6 +210,54 @@ pub(crate) fn assemble(
         }
     }
     orphan_keys.len()
+}
+
+/// A local edge id with no vertex number known in [`Numbers`].
+const UNKNOWN: u32 = u32::MAX;
+
+/// Per-thread table from a brick's local edge ids to vertex numbers: its own edges and its
+/// neighbours' edges on its far faces; every other entry [`UNKNOWN`].
+struct Numbers {
+    number: Vec<u32>,
+    /// The ids set for the current brick, reset by [`Numbers::clear`].
+    written: Vec<u16>,
+}
+
+impl Numbers {
+    /// Resets the entries of the last brick.
+    fn clear(&mut self) {
+        for &id in &self.written {
+            self.number[id as usize] = UNKNOWN;
+        }
+        self.written.clear();
+    }
+
+    /// Numbers the edges of brick `o` (row bases `bases`) whose lower sample lies in its local
+    /// box from `[0; 3]` to `span` (exclusive) and whose `x` is below `span[0]`, under the ids of
+    /// the brick that sees `o`'s local origin at `offset`.
+    fn fill(&mut self, o: &BrickEdges, bases: &[u32], offset: [usize; 3], span: [usize; 3]) {
+        for kl in 0..span[2].min(o.owned[2]) {
+            for jl in 0..span[1].min(o.owned[1]) {
+                let r = kl * o.owned[1] + jl;
+                let start = o.edge_rows[r] as usize;
+                let row = &o.edges[start..o.edge_rows[r + 1] as usize];
+                for (p, e) in row.iter().enumerate() {
+                    let il = (e.0 >> 2) as usize;
+                    if il >= span[0] {
+                        break; // rows are sorted by `x`
+                    }
+                    let id = local_edge(
+                        il + offset[0],
+                        jl + offset[1],
+                        kl + offset[2],
+                        (e.0 & 3) as usize,
+                    );
+                    self.number[id as usize] = bases[r] + p as u32;
+                    self.written.push(id);
+                }
+            }
+        }
+    }
 }
 
 /// Marks a triangle corner whose edge no brick lists (vertex numbers stay far below 2³¹).
@@ -306,4 +359,104 @@ fn neighbour_vertex(
         .binary_search_by_key(&local, |e| e.0)
         .map_err(|_| orphan())?;
     Ok(bases[owner_brick][r] + at as u32)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::IndexedMesh;
+    use glam::{DVec3, Vec3};
+
+    /// Two 2 × 2 × 2 bricks side by side along `x` (grid of 4 × 2 × 2 cells): brick 0 owns the
+    /// sample rows below 2 along `x`, brick 1 the rest. Brick 0's one triangle uses its own edge,
+    /// then two edges on its far face `x = 2`, which brick 1 owns at its local `x = 0`.
+    fn bricks(neighbour_lists: bool) -> (Vec<BrickEdges>, Vec<BrickTriangles>) {
+        let row_of = |owned: [usize; 3], edges: &[(u16, [usize; 2])]| {
+            // rows (k, j) in order; `edges` as (local `i << 2 | axis`, (j, k)).
+            let mut list = Vec::new();
+            let mut rows = vec![0u32];
+            for k in 0..owned[2] {
+                for j in 0..owned[1] {
+                    for &(e, at) in edges {
+                        if at == [j, k] {
+                            list.push((e, Vec3::new(f32::from(e), j as f32, k as f32)));
+                        }
+                    }
+                    rows.push(list.len() as u32);
+                }
+            }
+            (list, rows)
+        };
+        let (e0, r0) = row_of([2, 3, 3], &[(1 << 2 | 1, [0, 0])]);
+        let theirs: &[(u16, [usize; 2])] = if neighbour_lists {
+            &[(1, [0, 0]), (2, [1, 0])]
+        } else {
+            &[(1, [0, 0])]
+        };
+        let (e1, r1) = row_of([3, 3, 3], theirs);
+        let edges = vec![
+            BrickEdges {
+                coord: [0, 0, 0],
+                owned: [2, 3, 3],
+                extent: [2, 2, 2],
+                edges: e0,
+                edge_rows: r0,
+            },
+            BrickEdges {
+                coord: [1, 0, 0],
+                owned: [3, 3, 3],
+                extent: [2, 2, 2],
+                edges: e1,
+                edge_rows: r1,
+            },
+        ];
+        let mut rows = vec![0u32; 5];
+        rows[1..].fill(1);
+        let tri = [
+            local_edge(1, 0, 0, 1),
+            local_edge(2, 0, 0, 1),
+            local_edge(2, 1, 0, 2),
+        ];
+        let triangles = vec![
+            BrickTriangles {
+                triangles: vec![tri],
+                triangle_rows: rows,
+                ..Default::default()
+            },
+            BrickTriangles {
+                triangle_rows: vec![0; 5],
+                ..Default::default()
+            },
+        ];
+        (edges, triangles)
+    }
+
+    fn spec() -> GridSpec {
+        GridSpec {
+            origin: DVec3::ZERO,
+            cell: 1.0,
+            cells: [4, 2, 2],
+        }
+    }
+
+    #[test]
+    fn corners_on_a_far_face_take_the_neighbours_vertices() {
+        let (edges, triangles) = bricks(true);
+        let mut mesh = IndexedMesh::default();
+        assert_eq!(assemble(edges, triangles, &spec(), 2, &mut mesh), 0);
+        // Dense order: row (0, 0) holds brick 0's edge then brick 1's (local x 0 → vertex 1);
+        // row (k 0, j 1) holds brick 1's axis-2 edge (vertex 2).
+        assert_eq!(mesh.triangles, vec![[0, 1, 2]]);
+        assert_eq!(mesh.positions.len(), 3);
+    }
+
+    #[test]
+    fn a_corner_no_neighbour_lists_gets_one_midpoint_vertex() {
+        let (edges, triangles) = bricks(false);
+        let mut mesh = IndexedMesh::default();
+        assert_eq!(assemble(edges, triangles, &spec(), 2, &mut mesh), 1);
+        assert_eq!(mesh.triangles, vec![[0, 1, 2]]);
+        // The orphan: the z edge from sample (2, 1, 0), at its midpoint.
+        assert_eq!(mesh.positions[2], DVec3::new(2.0, 1.0, 0.5));
+    }
 }
