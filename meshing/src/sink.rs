@@ -12,6 +12,12 @@ pub trait MeshSink {
     fn add_vertex(&mut self, p: DVec3) -> u32;
     /// Adds a triangle, counter-clockwise seen from outside.
     fn add_triangle(&mut self, t: [u32; 3]);
+    /// Adds triangles in order (as [`MeshSink::add_triangle`] on each).
+    fn add_triangles(&mut self, ts: &[[u32; 3]]) {
+        for &t in ts {
+            self.add_triangle(t);
+        }
+    }
 }
 
 impl MeshSink for IndexedMesh {
@@ -27,5 +33,9 @@ impl MeshSink for IndexedMesh {
 
     fn add_triangle(&mut self, t: [u32; 3]) {
         self.triangles.push(t);
+    }
+
+    fn add_triangles(&mut self, ts: &[[u32; 3]]) {
+        self.triangles.extend_from_slice(ts);
     }
 }

@@ -196,9 +196,17 @@ pub(crate) fn assemble(
         p[axis] += 0.5 * spec.cell;
         sink.add_vertex(p)
     }));
+    // A sink that numbers vertices in the order given (an `IndexedMesh`) takes a row's
+    // triangles as they are.
+    let identity = ids.iter().enumerate().all(|(i, &v)| v as usize == i);
     for (b, r) in cell_rows(cells, brick, &rows, &extents) {
         let (tris, tri_rows, _, _, orphans) = &resolved[b];
-        for t in &tris[tri_rows[r] as usize..tri_rows[r + 1] as usize] {
+        let row = &tris[tri_rows[r] as usize..tri_rows[r + 1] as usize];
+        if identity && orphans.is_empty() {
+            sink.add_triangles(row);
+            continue;
+        }
+        for t in row {
             sink.add_triangle(t.map(|v| {
                 if v & ORPHAN == 0 {
                     return ids[v as usize];

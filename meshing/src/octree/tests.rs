@@ -183,6 +183,42 @@ fn thread_count_does_not_change_the_mesh() {
     assert_eq!(run(1), run(3));
 }
 
+/// A sink numbering its vertices downwards from 10⁹ − 1: the assembly must map every corner.
+#[derive(Default)]
+struct Backwards {
+    positions: Vec<DVec3>,
+    triangles: Vec<[u32; 3]>,
+}
+
+impl crate::sink::MeshSink for Backwards {
+    fn add_vertex(&mut self, p: DVec3) -> u32 {
+        self.positions.push(p);
+        1_000_000_000 - self.positions.len() as u32
+    }
+
+    fn add_triangle(&mut self, t: [u32; 3]) {
+        self.triangles.push(t);
+    }
+}
+
+#[test]
+fn a_sink_with_its_own_numbers_gets_the_same_mesh() {
+    let (_, solid) = &models()[7];
+    let p = solid.compile();
+    let g = spec(solid, 48);
+    let (mesh, _) = mesh_sparse(&p, g, &SparseOptions::default()).unwrap();
+    let mut other = Backwards::default();
+    mesh_sparse_into(&p, g, &SparseOptions::default(), &mut other).unwrap();
+    assert_eq!(other.positions, mesh.positions);
+    let renumbered: Vec<[u32; 3]> = other
+        .triangles
+        .iter()
+        .map(|t| t.map(|v| 1_000_000_000 - 1 - v))
+        .collect();
+    assert!(!mesh.triangles.is_empty());
+    assert_eq!(renumbered, mesh.triangles);
+}
+
 #[test]
 fn surface_cost_not_volume() {
     let s = Solid::sphere(0.6);
