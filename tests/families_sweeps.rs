@@ -91,6 +91,15 @@ fn anisotropically_scaled_extrusion_has_its_volume_and_round_trips() {
     assert_eq!(solidkit_kernel::json::from_str(&text).unwrap(), solid);
 }
 
+/// OpenSCAD's `scale = [0, 1]`: a wedge whose top slice is a segment (a thin feature along the
+/// whole top edge), half the prism's volume, its ridge at the full height.
+#[test]
+fn extrusion_scaled_to_zero_along_one_axis_is_a_wedge() {
+    let r = check("extrude_wedge.json", 1, 0, 0.6 * 1.2 / 2.0);
+    let top = r.bbox[1][2];
+    assert!((top - 0.6).abs() < 0.02, "ridge at {top}");
+}
+
 #[test]
 fn revolution_of_an_off_axis_circle_is_a_torus() {
     check("revolve_torus.json", 1, 1, TAU * 1.0 * PI * 0.35 * 0.35);

@@ -248,7 +248,8 @@ fn extrusions_and_groups_ignore_what_openscad_ignores() {
 }
 
 /// `linear_extrude(scale = 0)` is the cone to a point: a square pyramid of volume a²h/3, and a
-/// circle's cone of volume πr²h/3, both closed with one shell.
+/// circle's cone of volume πr²h/3; one factor 0 is a wedge of half the prism's volume; all closed
+/// with one shell.
 #[test]
 fn zero_scale_extrusion_is_a_pyramid() {
     for (text, volume) in [
@@ -259,6 +260,16 @@ fn zero_scale_extrusion_is_a_pyramid() {
         (
             "linear_extrude(height = 6, center = true, scale = 0) circle(r = 2);",
             PI * 4.0 * 2.0,
+        ),
+        // One factor 0: a wedge, half the prism (the User Manual's `scale` is a number or a
+        // vector, each factor applied to its axis).
+        (
+            "linear_extrude(height = 3, center = false, scale = [0, 1]) square(size = [2, 2], center = true);",
+            6.0,
+        ),
+        (
+            "linear_extrude(height = 4, center = true, scale = [1, 0]) circle(r = 1);",
+            PI * 2.0,
         ),
     ] {
         let (s, w) = warned(text, Facets::Exact);

@@ -1,8 +1,8 @@
 //! Linear extrusion of a profile along z over `[−h/2, h/2]`, optionally twisted (the profile turns
 //! by `twist` degrees from bottom to top) and scaled (its size goes linearly from 1 at the bottom
 //! to `scale` at the top, about the z axis; `scale` may differ along x and y, as OpenSCAD's
-//! `linear_extrude(scale = [sx, sy])`, or be 0 along both: a cone to the apex, whose top slice is
-//! a point and is evaluated with the scale clamped to 10⁻¹²).
+//! `linear_extrude(scale = [sx, sy])`, and be 0 along one axis or both: a wedge to a segment or a
+//! cone to the apex, whose degenerate top slice is evaluated with the scale clamped to 10⁻¹²).
 //!
 //! Field. At height `z` (clamped to the slab) the slice is the profile scaled by
 //! `k(z) = 1 + (s − 1)(z + h/2)/h` (per axis: `kx`, `ky`) and then turned by
@@ -11,10 +11,13 @@
 //! the profile to the slice stretches by at least `m`); for a uniform scale it is the exact 2D
 //! distance. Without twist or scale the field is the exact prism distance
 //! `capped(σ, |z| − h/2)`. With them `σ` is not a distance in 3D: `|∂σ/∂q| ≤ 1` and
-//! `|∂σ/∂z| ≤ |k'|·r_p + |θ'|·|q| + |kx' − ky'|·|w|` (`r_p` the largest radius of the profile; for
-//! a distance `|d(w) − ∇d·w|` is at most the norm of the nearest boundary point; the last term only
-//! for a non-uniform scale), so `σ/L` with `L = √(1 + speed²)` is 1-Lipschitz inside the cylinder
-//! `|q| ≤ R` of the solid's largest radius (where `|w| ≤ R / min k`). Outside that cylinder a
+//! `|∂σ/∂z| ≤ |k'|·r_p + |θ'|·|q| + |kx' − ky'|·|u|/K²` (`r_p` the largest radius of the profile;
+//! for a distance `|d(w) − ∇d·w|` is at most the norm of the nearest boundary point; the last term
+//! only for a non-uniform scale: with `m = kx ≤ ky` it is `∂d/∂w_y · u.y·(kx'·ky − kx·ky')/ky²`,
+//! the bracket is `kx' − ky'` for linear scales, and `K = max(min(1, sx), min(1, sy))` bounds the
+//! larger scale `ky` from below at every height), so `σ/L` with `L = √(1 + speed²)` is
+//! 1-Lipschitz inside the cylinder `|q| ≤ R` of the solid's largest radius. One end scale may be
+//! 0 (a wedge: the top slice is a segment, `K` stays positive); both 0 is the cone above. Outside that cylinder a
 //! twisted or non-uniformly scaled extrusion evaluates the slice at the radial projection `π(q)`
 //! onto it and takes `max(·, |q| − R)`: a composition with a projection onto a convex set and a
 //! maximum of 1-Lipschitz functions, so the whole field is 1-Lipschitz and a distance bound
@@ -60,8 +63,8 @@ impl Extrude {
     }
 
     /// The extrusion of `profile` over height `height`, turned by `twist` degrees and scaled to
-    /// `scale.x` along x and `scale.y` along y at the top. Both scales positive, or both zero (a
-    /// cone from the profile to the point above the origin).
+    /// `scale.x` along x and `scale.y` along y at the top. Both scales at least 0: one zero is a
+    /// wedge to a segment, both zero a cone from the profile to the point above the origin.
     pub fn with_scale(
         profile: Profile,
         height: f64,
@@ -76,10 +79,17 @@ impl Extrude {
         if !twist.is_finite() {
             return Err(invalid("twist", "expected a finite number"));
         }
-        // Both zero: a cone to the apex over the profile (OpenSCAD's `scale = 0`).
+        // Both zero: a cone to the apex over the profile (OpenSCAD's `scale = 0`); one zero: a
+        // wedge whose top slice is a segment (OpenSCAD's `scale = [0, 1]`).
         if scale != DVec2::ZERO {
-            positive("scale", scale.x)?;
-            positive("scale", scale.y)?;
+            for s in [scale.x, scale.y] {
+                if !s.is_finite() {
+                    return Err(invalid("scale", "expected a finite number"));
+                }
+                if s < 0.0 {
+                    return Err(invalid("scale", "expected a number not below 0"));
+                }
+            }
         }
         let twist_rate = twist.to_radians() / height;
         let scale_rate = (scale - 1.0) / height;
@@ -87,8 +97,10 @@ impl Extrude {
         let radius = rp * scale.max_element().max(1.0);
         let mut speed = scale_rate.abs().max_element() * rp + twist_rate.abs() * radius;
         if scale.x != scale.y {
-            let k_min = scale.min_element().min(1.0);
-            speed += (scale_rate.x - scale_rate.y).abs() * radius / k_min;
+            // The larger of the two slice scales never drops below this (each is linear in z,
+            // from 1 to its end scale): the term `|kx' − ky'|·|u|/K²` of the module docs.
+            let k_big = scale.x.min(1.0).max(scale.y.min(1.0));
+            speed += (scale_rate.x - scale_rate.y).abs() * radius / (k_big * k_big);
         }
         Ok(Extrude {
             profile,

@@ -129,15 +129,65 @@ fn zero_scale_extrusion_is_the_cone_to_the_apex() {
     let volume = PI * 0.25 * 1.2 / 3.0;
     assert!((e.volume() - volume).abs() < 1e-12 * volume);
     check_shape(&e, 1.5);
-    assert!(
-        Extrude::with_scale(
-            Profile::circle(0.5).unwrap(),
-            1.0,
-            0.0,
-            DVec2::new(0.0, 1.0)
-        )
-        .is_err()
-    );
+    for bad in [DVec2::new(-0.5, 1.0), DVec2::new(1.0, f64::NAN)] {
+        let e = Extrude::with_scale(Profile::circle(0.5).unwrap(), 1.0, 0.0, bad);
+        assert!(e.is_err(), "{bad}");
+    }
+}
+
+/// One zero scale (OpenSCAD's `linear_extrude(scale = [0, 1])`): the slices shrink to a segment
+/// along one axis. The inside is the exact wedge's, the volume is half the prism's, and the field
+/// passes the conformance checks.
+#[test]
+fn one_zero_scale_is_a_wedge_to_a_segment() {
+    let profile = circle_at(DVec2::new(0.2, 0.1), 0.4);
+    for scale in [DVec2::new(0.0, 1.0), DVec2::new(0.7, 0.0)] {
+        let e = Extrude::with_scale(profile.clone(), 1.2, 0.0, scale).unwrap();
+        let mut rng = Rng::new(34);
+        for _ in 0..4000 {
+            let p = rng.vec(1.0);
+            let t = (p.z + 0.6) / 1.2;
+            let k = DVec2::ONE + (scale - DVec2::ONE) * t;
+            let w = DVec2::new(p.x, p.y) / k;
+            let inside = p.z.abs() < 0.6 && profile.distance(w) < 0.0;
+            let v = e.value(p);
+            assert!(v.is_finite(), "{p}");
+            if v.abs() > 1e-9 {
+                assert_eq!(v < 0.0, inside, "{scale} at {p}: {v}");
+            }
+        }
+        let area = PI * 0.16;
+        let (a, b) = (scale.x - 1.0, scale.y - 1.0);
+        let volume = area * 1.2 * (1.0 + (a + b) / 2.0 + a * b / 3.0);
+        assert!((e.volume() - volume).abs() < 1e-9, "{scale}");
+        check_shape(&e, 1.5);
+    }
+}
+
+/// The field's gradient never exceeds 1 for anisotropic end scales, also where both scales are
+/// below 1 (where the slice stretches most along the larger one) and where one is 0.
+#[test]
+fn anisotropic_extrusions_are_one_lipschitz() {
+    let profile = circle_at(DVec2::new(0.5, -0.4), 0.3);
+    for (scale, twist) in [
+        (DVec2::new(0.1, 0.2), 0.0),
+        (DVec2::new(0.2, 0.05), 40.0),
+        (DVec2::new(0.0, 1.0), 0.0),
+        (DVec2::new(0.0, 0.3), 0.0),
+        (DVec2::new(2.0, 0.0), 90.0),
+    ] {
+        let e = Extrude::with_scale(profile.clone(), 1.0, twist, scale).unwrap();
+        let mut rng = Rng::new(35);
+        let mut worst = 0.0f64;
+        for _ in 0..20000 {
+            let p = rng.vec(1.2);
+            if p.z.abs() >= 0.5 {
+                continue;
+            }
+            worst = worst.max(e.gradient(p).length());
+        }
+        assert!(worst <= 1.0 + 1e-9, "{scale} twist {twist}: |grad| {worst}");
+    }
 }
 
 #[test]
