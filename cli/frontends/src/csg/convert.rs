@@ -359,6 +359,17 @@ fn node(
                 .into_iter()
                 .map(|f| f.into_iter().rev().collect())
                 .collect();
+            let (faces, cleaned) = super::faces::clean_faces(&points, faces);
+            if let Some(message) = cleaned.message() {
+                ctx.warn(stmt, message);
+            }
+            if faces.is_empty() {
+                ctx.warn(
+                    stmt,
+                    "polyhedron: no face encloses anything: the object is empty",
+                );
+                return leaf(Geom::Empty);
+            }
             leaf(Geom::Solid(polyhedron(stmt, points, faces)?))
         }
         "circle" => {

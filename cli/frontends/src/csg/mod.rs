@@ -25,7 +25,9 @@
 //! or when another operand is not convex, it is that operand offset by the sphere's radius (exact
 //! where the operand's field is a true distance); two non-convex operands are refused.
 //! Extrusions are exact sweeps of the profile (OpenSCAD's `slices` is ignored; `scale = 0` is a
-//! cone to the apex, `scale = [0, 1]` a wedge to a segment), and 2D Booleans under an extrusion are replayed as 3D Booleans of the swept
+//! cone to the apex, `scale = [0, 1]` a wedge to a segment); `polyhedron` faces are cleaned
+//! as OpenSCAD takes them (`faces.rs`: repeated points merged, collapsed faces dropped, degenerate or
+//! twisted ones fanned), and 2D Booleans under an extrusion are replayed as 3D Booleans of the swept
 //! leaves. `import` reads mesh files (`.stl`, `.off`, `.obj`, `.ply`) as solids and `.dxf`
 //! drawings as 2D regions (`import.rs`, `dxf.rs`), `surface` reads `.dat` and PNG height maps
 //! (`surface.rs`), both relative to the `.csg` file's folder under the confinement rules of
@@ -49,6 +51,7 @@ mod convert;
 mod convex;
 mod dxf;
 mod error;
+mod faces;
 mod facets;
 mod flat;
 mod hull;

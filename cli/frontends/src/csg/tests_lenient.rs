@@ -93,3 +93,42 @@ fn hull_of_a_solid_without_volume_is_empty() {
     let v = signed_volume(&mesh(&s, 64).0);
     assert!(rel_err(v, 8.0) < 0.01, "volume {v}");
 }
+
+/// Generated polyhedra repeat their poles: a square pyramid whose apex is listed once per side
+/// face (four copies of one point, each side a quad with two apex corners) and a face that is a
+/// doubled edge. OpenSCAD renders the pyramid; so does solidkit, closed, with its volume 4/3,
+/// one shell, and one warning that names what was merged and dropped.
+#[test]
+fn a_polyhedron_with_a_repeated_pole_is_the_solid_it_draws() {
+    let text = "polyhedron(points = [[-1, -1, 0], [1, -1, 0], [1, 1, 0], [-1, 1, 0], \
+                [0, 0, 1], [0, 0, 1], [0, 0, 1], [0, 0, 1]], \
+                faces = [[0, 1, 2, 3], [1, 0, 4, 5], [2, 1, 5, 6], [3, 2, 6, 7], [0, 3, 7, 4], \
+                [1, 2, 2, 1]], convexity = 1);";
+    let (s, w) = warned(text, Facets::OpenScad);
+    assert_eq!(w.len(), 1, "{w:?}");
+    assert!(
+        w[0].contains("3 repeated points merged") && w[0].contains("1 faces with fewer than 3"),
+        "{w:?}"
+    );
+    let (m, report) = mesh(&s, 96);
+    assert!(report.is_closed_manifold(), "{report:?}");
+    assert_eq!(report.shells, 1);
+    let v = signed_volume(&m);
+    assert!(rel_err(v, 4.0 / 3.0) < 0.01, "{v}");
+}
+
+/// A polyhedron whose every face collapses encloses nothing: skipped with a warning, the rest is
+/// kept.
+#[test]
+fn a_polyhedron_of_collapsed_faces_is_skipped() {
+    let text = "polyhedron(points = [[0, -4, 1], [0, -5, 1], [0, -5, 2], [0, -4, 0]], \
+                faces = [[1, 2, 2, 1], [0, 0, 3, 3]], convexity = 1);\n\
+                cube(size = 1, center = true);\n";
+    only_the_cube_is_kept(
+        text,
+        &[
+            "1:1: polyhedron: 2 faces with fewer than 3 distinct corners dropped, as OpenSCAD does",
+            "1:1: polyhedron: no face encloses anything: the object is empty",
+        ],
+    );
+}
