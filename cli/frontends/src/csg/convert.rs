@@ -10,6 +10,7 @@ use super::hull::{convex_hull, convex_hull_2d, convex_hull_within};
 use super::import::{Imported, import, string_arg};
 use super::offset::{Offset, offset};
 use super::parser::{Stmt, Tree, Value};
+use super::pieces::{self, Piece};
 use super::projection::projection;
 use super::resize::resize;
 use super::surface::surface;
@@ -40,6 +41,8 @@ pub(super) enum Geom {
 struct Hullable {
     points: Vec<DVec3>,
     convex: bool,
+    /// The statement as convex pieces ([`super::pieces`]; 3D only), where known.
+    pieces: Option<Vec<Piece>>,
 }
 
 /// How far the hull of meshed operand points may miss a point, in cells of the operand's grid:
@@ -737,10 +740,16 @@ fn hullable_of(
     geom: &Geom,
     infos: Vec<Option<Hullable>>,
 ) -> Result<Option<Hullable>, CsgError> {
-    let convex = |points| {
+    let convex = |points: Vec<DVec3>| {
+        let pieces = Some(if points.is_empty() {
+            Vec::new()
+        } else {
+            vec![points.clone()]
+        });
         Some(Hullable {
             points,
             convex: true,
+            pieces,
         })
     };
     if matches!(geom, Geom::Empty) {
@@ -748,7 +757,11 @@ fn hullable_of(
     }
     Ok(match stmt.name.as_str() {
         "sphere" | "cylinder" | "cube" => convex(primitive_points(stmt)?),
-        "circle" | "square" => convex(flat_points(geom).unwrap_or_default()),
+        "circle" | "square" => Some(Hullable {
+            points: flat_points(geom).unwrap_or_default(),
+            convex: true,
+            pieces: None,
+        }),
         "polygon" => {
             let Geom::Flat(f) = geom else { return Ok(None) };
             let points = flat_points(geom).unwrap_or_default();
@@ -759,6 +772,7 @@ fn hullable_of(
             Some(Hullable {
                 points,
                 convex: is_convex,
+                pieces: None,
             })
         }
         "polyhedron" => {
@@ -768,9 +782,11 @@ fn hullable_of(
                 .and_then(|(v, f)| Polyhedron::new(v, f).ok())
                 .map(|p| p.volume());
             let is_convex = matches!((volume, hull_volume), (Some(a), Some(b)) if (a - b).abs() <= 1e-9 * b.abs());
+            let pieces = is_convex.then(|| vec![points.clone()]);
             Some(Hullable {
                 points,
                 convex: is_convex,
+                pieces,
             })
         }
         "group" | "union" | "color" | "render" | "multmatrix" => {
@@ -783,15 +799,50 @@ fn hullable_of(
                 .iter()
                 .flat_map(|h| h.points.iter().copied())
                 .collect();
+            let mut pieces = infos
+                .into_iter()
+                .try_fold(Vec::new(), |acc, h| pieces::union(acc, h.pieces?));
             if stmt.name == "multmatrix" {
                 let m = matrix(stmt)?;
-                for p in &mut points {
+                for p in points
+                    .iter_mut()
+                    .chain(pieces.iter_mut().flatten().flatten())
+                {
                     *p = apply(&m, *p);
                 }
             }
             Some(Hullable {
                 points,
                 convex: is_convex,
+                pieces,
+            })
+        }
+        "difference" | "intersection" if matches!(geom, Geom::Solid(_)) => {
+            // Known exactly where every operand is made of convex pieces; meshed otherwise.
+            let Some(infos) = infos.into_iter().collect::<Option<Vec<Hullable>>>() else {
+                return Ok(None);
+            };
+            let Some(sets) = infos
+                .into_iter()
+                .map(|h| h.pieces)
+                .collect::<Option<Vec<Vec<Piece>>>>()
+            else {
+                return Ok(None);
+            };
+            let mut sets = sets.into_iter();
+            let first = sets.next().unwrap_or_default();
+            let pieces = if stmt.name == "difference" {
+                sets.try_fold(first, |acc, b| pieces::difference(acc, &b))
+            } else {
+                sets.try_fold(first, |acc, b| pieces::intersection(&acc, &b))
+            };
+            let Some(pieces) = pieces else {
+                return Ok(None);
+            };
+            Some(Hullable {
+                points: pieces.iter().flatten().copied().collect(),
+                convex: pieces.len() == 1,
+                pieces: Some(pieces),
             })
         }
         _ => None,
@@ -998,6 +1049,7 @@ fn operands(
             None => Hullable {
                 points: geometry_points(stmt, &g)?,
                 convex: false,
+                pieces: None,
             },
         };
         out.push((g, info, k));
@@ -1026,6 +1078,7 @@ fn hull_of(stmt: &Stmt, dim: u8, points: &[DVec3]) -> Result<(Geom, Option<Hulla
             Some(Hullable {
                 points,
                 convex: true,
+                pieces: None,
             }),
         ));
     }
@@ -1035,6 +1088,7 @@ fn hull_of(stmt: &Stmt, dim: u8, points: &[DVec3]) -> Result<(Geom, Option<Hulla
     let info = Hullable {
         points: v.clone(),
         convex: true,
+        pieces: Some(vec![v.clone()]),
     };
     // A hull is convex: the intersection of its face planes evaluates in a dot product per face
     // and prunes per octree cell, where a mesh solid pays a winding number per sample.
@@ -1042,7 +1096,8 @@ fn hull_of(stmt: &Stmt, dim: u8, points: &[DVec3]) -> Result<(Geom, Option<Hulla
 }
 
 /// `hull()` of any children: the convex hull of their points (exact for primitives, polyhedra,
-/// polygons and their unions and transforms; the vertices of a fine mesh otherwise).
+/// polygons, their unions, transforms, and the differences and intersections of convex parts; the
+/// vertices of a fine mesh otherwise).
 fn hull(
     stmt: &Stmt,
     children: Vec<Geom>,
@@ -1118,10 +1173,18 @@ fn minkowski(
         }
     }
     if spheres.is_empty() || spheres.len() == ops.len() {
+        if !all_convex
+            && dim == 3
+            && let Some(g) = minkowski_by_pieces(stmt, &ops)?
+        {
+            return Ok((g, None));
+        }
         if !all_convex {
             return Err(stmt.error(
                 "only convex operands (primitives, convex polyhedra and polygons, hulls, and \
-                 their transforms), or a sphere with any other operand, are supported",
+                 their transforms), one operand cut into at most 512 convex pieces (unions, \
+                 differences and intersections of convex parts of up to 130 faces) with convex \
+                 others, or a sphere with any other operand, are supported",
             ));
         }
         let sum = minkowski_points(dim, ops.into_iter().map(|(_, h, _)| h.points));
@@ -1160,6 +1223,31 @@ fn minkowski(
         Geom::Solid(if t == DVec3::ZERO { s } else { s.translate(t) }),
         None,
     ))
+}
+
+/// `minkowski()` of one operand made of convex pieces ([`super::pieces`]) and convex others: the
+/// union of the hulls of each piece plus the others' sum; `None` when an operand is neither.
+fn minkowski_by_pieces(stmt: &Stmt, ops: &[Operand]) -> Result<Option<Geom>, CsgError> {
+    let (rest, convex): (Vec<&Operand>, Vec<&Operand>) =
+        ops.iter().partition(|(_, h, _)| !h.convex);
+    let [(_, decomposed, _)] = rest[..] else {
+        return Ok(None);
+    };
+    let Some(parts) = &decomposed.pieces else {
+        return Ok(None);
+    };
+    let b = minkowski_points(3, convex.iter().map(|(_, h, _)| h.points.clone()));
+    let mut solids = Vec::new();
+    for sum in pieces::sum_with_convex(parts, &b) {
+        if let (Geom::Solid(s), _) = hull_of(stmt, 3, &sum)? {
+            solids.push(s);
+        }
+    }
+    Ok(Some(if solids.is_empty() {
+        Geom::Empty
+    } else {
+        Geom::Solid(Solid::union_all(solids))
+    }))
 }
 
 /// The vertices of the Minkowski sum of the convex hulls of `sets` (reduced to hull vertices

@@ -113,16 +113,19 @@ pub fn convex_hull_within(points: &[DVec3], eps: f64) -> Option<(Vec<DVec3>, Vec
         if visible.is_empty() {
             continue;
         }
-        let mut edges = HashSet::new();
+        // The visible faces' edges in face order (a hash set's order would make the hull, and
+        // everything built from it, differ from run to run).
+        let mut edges = Vec::with_capacity(3 * visible.len());
         for &f in &visible {
             let [a, b, c] = faces[f].v;
             edges.extend([(a, b), (b, c), (c, a)]);
             faces[f].alive = false;
         }
+        let seen: HashSet<(usize, usize)> = edges.iter().copied().collect();
         let horizon: Vec<(usize, usize)> = edges
             .iter()
             .copied()
-            .filter(|&(a, b)| !edges.contains(&(b, a)))
+            .filter(|&(a, b)| !seen.contains(&(b, a)))
             .collect();
         for (a, b) in horizon {
             faces.push(Face::new(points, [a, b, i]));

@@ -23,7 +23,9 @@
 //! operand otherwise (a difference, an extrusion). `minkowski()` of convex operands is the hull of
 //! the sums of their vertices (exact); with a sphere operand (under translations) and exact facets,
 //! or when another operand is not convex, it is that operand offset by the sphere's radius (exact
-//! where the operand's field is a true distance); two non-convex operands are refused.
+//! where the operand's field is a true distance); one operand built from convex parts by unions,
+//! differences and intersections is cut into convex pieces (`pieces.rs`) and summed piece by piece
+//! with the convex others; two non-convex operands are refused.
 //! Extrusions are exact sweeps of the profile (OpenSCAD's `slices` is ignored; `scale = 0` is a
 //! cone to the apex, `scale = [0, 1]` a wedge to a segment); `polyhedron` faces are cleaned
 //! as OpenSCAD takes them (`faces.rs`: repeated points merged, collapsed faces dropped, degenerate or
@@ -59,6 +61,7 @@ mod import;
 mod lexer;
 mod offset;
 mod parser;
+mod pieces;
 mod projection;
 mod resize;
 mod shadow;

@@ -372,6 +372,39 @@ fn minkowski_of_convex_operands_and_spheres() {
     assert!(e.to_string().starts_with("2:1: minkowski: "), "{e}");
 }
 
+/// `minkowski()` of a difference (a square ring 4 × 4 × 1 with a 2 × 2 hole) and a convex
+/// operand (a unit cube, then OpenSCAD's square-faceted cylinder of radius √2 / 2 turned by
+/// 45°, the same unit square): the ring grows by half a unit on every side, its hole shrinks to
+/// 1 × 1, its height to 2: volume (25 − 1) · 2 = 48, genus 1 (the User Manual: the sum of every
+/// point of one operand with every point of the other, so non-convex operands are summed piece
+/// by piece). `hull()` of the ring is the outer box exactly (its pieces' corners).
+#[test]
+fn minkowski_of_a_difference_and_a_convex_operand() {
+    let ring = "difference() { cube(size = [4, 4, 1], center = true); cube(size = [2, 2, 2], center = true); }";
+    for other in [
+        "cube(size = [1, 1, 1], center = true);",
+        "multmatrix([[0.707107, -0.707107, 0, 0], [0.707107, 0.707107, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]) \
+         cylinder($fn = 4, h = 1, r1 = 0.707107, r2 = 0.707107, center = true);",
+    ] {
+        let (s, _) = warned(
+            &format!("minkowski() {{ {ring} {other} }}"),
+            Facets::OpenScad,
+        );
+        let (m, report) = mesh(&s, 96);
+        assert!(report.is_closed_manifold(), "{other}: {report:?}");
+        assert_eq!((report.shells, report.genus), (1, Some(1)), "{other}");
+        let v = signed_volume(&m);
+        assert!(rel_err(v, 48.0) < 0.01, "{other}: {v}");
+    }
+    let (s, _) = warned(&format!("hull() {{ {ring} }}"), Facets::OpenScad);
+    let (m, _) = mesh(&s, 64);
+    assert!(
+        rel_err(signed_volume(&m), 16.0) < 0.005,
+        "{}",
+        signed_volume(&m)
+    );
+}
+
 #[test]
 fn syntax_errors_are_located() {
     for (text, line, col) in [
