@@ -447,11 +447,18 @@ mod tests {
         }
     }
 
+    /// The assembled mesh of [`bricks`] and its orphan count.
+    fn assembled(neighbour_lists: bool) -> (IndexedMesh, usize) {
+        let (edges, triangles) = bricks(neighbour_lists);
+        let mut mesh = IndexedMesh::default();
+        let orphans = assemble(edges, triangles, &spec(), 2, &mut mesh);
+        (mesh, orphans)
+    }
+
     #[test]
     fn corners_on_a_far_face_take_the_neighbours_vertices() {
-        let (edges, triangles) = bricks(true);
-        let mut mesh = IndexedMesh::default();
-        assert_eq!(assemble(edges, triangles, &spec(), 2, &mut mesh), 0);
+        let (mesh, orphans) = assembled(true);
+        assert_eq!(orphans, 0);
         // Dense order: row (0, 0) holds brick 0's edge then brick 1's (local x 0 → vertex 1);
         // row (k 0, j 1) holds brick 1's axis-2 edge (vertex 2).
         assert_eq!(mesh.triangles, vec![[0, 1, 2]]);
@@ -460,9 +467,8 @@ mod tests {
 
     #[test]
     fn a_corner_no_neighbour_lists_gets_one_midpoint_vertex() {
-        let (edges, triangles) = bricks(false);
-        let mut mesh = IndexedMesh::default();
-        assert_eq!(assemble(edges, triangles, &spec(), 2, &mut mesh), 1);
+        let (mesh, orphans) = assembled(false);
+        assert_eq!(orphans, 1);
         assert_eq!(mesh.triangles, vec![[0, 1, 2]]);
         // The orphan: the z edge from sample (2, 1, 0), at its midpoint.
         assert_eq!(mesh.positions[2], DVec3::new(2.0, 1.0, 0.5));

@@ -33,9 +33,9 @@ const MAX_WORK: usize = 50_000_000;
 /// thin wedge between two planes of a finer faceting costs the hull far more than its size.
 const MAX_PLANES: usize = 130;
 
-/// Adds the cost of clipping `piece` to `work`; `false` once past [`MAX_WORK`].
-fn afford(work: &mut usize, piece: &[DVec3]) -> bool {
-    *work += piece.len() * piece.len();
+/// Adds the cost of clipping `piece` `clips` times to `work`; `false` once past [`MAX_WORK`].
+fn afford(work: &mut usize, piece: &[DVec3], clips: usize) -> bool {
+    *work += clips * piece.len() * piece.len();
     *work <= MAX_WORK
 }
 
@@ -105,7 +105,7 @@ fn clip(piece: &[DVec3], (n, d): Plane) -> Option<Piece> {
 fn clip_all(p: &[DVec3], planes: &[Plane], work: &mut usize) -> Result<Option<Piece>, ()> {
     let mut cur = p.to_vec();
     for &pl in planes {
-        if !afford(work, &cur) {
+        if !afford(work, &cur, 1) {
             return Err(());
         }
         match clip(&cur, pl) {
@@ -114,6 +114,15 @@ fn clip_all(p: &[DVec3], planes: &[Plane], work: &mut usize) -> Result<Option<Pi
         }
     }
     Ok(Some(cur))
+}
+
+/// The face planes of the piece `q` that others are clipped by: `Some(None)` when it has no
+/// volume, `None` past [`MAX_PLANES`].
+fn cutter_planes(q: &[DVec3]) -> Option<Option<Vec<Plane>>> {
+    match hull_planes(q) {
+        None => Some(None),
+        Some((_, planes, _)) => (planes.len() <= MAX_PLANES).then_some(Some(planes)),
+    }
 }
 
 /// The pieces of the union of `a` and `b`.
@@ -127,12 +136,9 @@ pub(super) fn intersection(a: &[Piece], b: &[Piece]) -> Option<Vec<Piece>> {
     let mut out = Vec::new();
     let mut work = 0;
     for q in b {
-        let Some((_, planes, _)) = hull_planes(q) else {
+        let Some(planes) = cutter_planes(q)? else {
             continue;
         };
-        if planes.len() > MAX_PLANES {
-            return None;
-        }
         for p in a {
             if let Some(c) = clip_all(p, &planes, &mut work).ok()? {
                 out.push(c);
@@ -150,19 +156,16 @@ pub(super) fn difference(a: Vec<Piece>, b: &[Piece]) -> Option<Vec<Piece>> {
     let mut cur = a;
     let mut work = 0;
     for q in b {
-        let Some((_, planes, _)) = hull_planes(q) else {
+        let Some(planes) = cutter_planes(q)? else {
             continue;
         };
-        if planes.len() > MAX_PLANES {
-            return None;
-        }
         let mut next = Vec::new();
         for p in &cur {
             // Inside the planes before `k`, outside plane `k`.
             let mut inner: Option<Piece> = Some(p.clone());
             for &(n, d) in &planes {
                 let Some(rest) = inner else { break };
-                if !afford(&mut work, &rest) || !afford(&mut work, &rest) {
+                if !afford(&mut work, &rest, 2) {
                     return None;
                 }
                 if let Some(out) = clip(&rest, (-n, -d)) {
