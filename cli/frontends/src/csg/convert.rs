@@ -13,6 +13,7 @@ use super::parser::{Stmt, Tree, Value};
 use super::pieces::{self, Piece};
 use super::projection::projection;
 use super::resize::resize;
+use super::sliced;
 use super::surface::surface;
 use super::text::{TextCache, text};
 use glam::{DVec2, DVec3};
@@ -442,9 +443,53 @@ fn node(
             let twist = stmt.num("twist", None, 0.0)?;
             let scale = stmt.size2("scale", None, 1.0)?;
             let centred = stmt.flag("center", None, false)?;
-            let s = sweep(stmt, &flat, faceted, |p| {
+            let exact = |p| {
                 Extrude::with_scale(p, h, -twist, scale).map(|e| Primitive::Extrude(Arc::new(e)))
-            })?;
+            };
+            // With OpenSCAD's facets a twisted or unevenly scaled extrusion is OpenSCAD's stack
+            // of flat slices (`sliced.rs`); otherwise (and where the stack is refused) the exact
+            // sweep, whose flat walls are the same.
+            let s = if faceted
+                && (twist != 0.0 || scale.x != scale.y)
+                && flat.leaf_count() <= sliced::MAX_SLICED_LEAVES
+            {
+                // OpenSCAD reads a slice count that is not a finite number as none.
+                let given = match stmt.arg("slices", None) {
+                    Some(Value::Num(n)) if n.is_finite() => Some(*n),
+                    _ => None,
+                };
+                let reach = reach(stmt, &flat, faceted, scale)?;
+                let slices = sliced::slice_count(given, h, twist, scale, stmt.resolution()?, reach);
+                let too_many = std::cell::Cell::new(false);
+                let s = sweep_solid(stmt, &flat, faceted, |p| {
+                    let loops = p.outline(0);
+                    let corners = loops.iter().map(Vec::len).sum::<usize>() as f64;
+                    let small = (slices + 1.0) * corners <= sliced::MAX_SLICE_CORNERS as f64;
+                    too_many.set(too_many.get() || !small);
+                    let stack = small
+                        .then(|| sliced::sliced_extrusion(&loops, h, twist, scale, slices as usize))
+                        .flatten();
+                    match stack {
+                        Some((v, f)) => polyhedron(stmt, v, f),
+                        None => exact(p)
+                            .map(Solid::primitive)
+                            .map_err(|e| stmt.error(e.to_string())),
+                    }
+                })?;
+                if too_many.get() {
+                    ctx.warn(
+                        stmt,
+                        format!(
+                            "{slices} slices would need more than {} vertices: meshed as the \
+                             exact twisted solid instead of OpenSCAD's flat slices",
+                            sliced::MAX_SLICE_CORNERS
+                        ),
+                    );
+                }
+                s
+            } else {
+                sweep(stmt, &flat, faceted, exact)?
+            };
             Ok(Geom::Solid(if centred {
                 s
             } else {
@@ -594,12 +639,24 @@ pub(super) fn sweep<E: std::fmt::Display>(
     faceted: bool,
     make: impl Fn(solidkit_kernel::profile::Profile) -> Result<Primitive, E>,
 ) -> Result<Solid, CsgError> {
+    sweep_solid(stmt, flat, faceted, |p| {
+        make(p)
+            .map(Solid::primitive)
+            .map_err(|e| stmt.error(e.to_string()))
+    })
+}
+
+/// [`sweep`] with a maker of whole solids (a primitive or a polyhedron per leaf).
+fn sweep_solid(
+    stmt: &Stmt,
+    flat: &Flat,
+    faceted: bool,
+    make: impl Fn(solidkit_kernel::profile::Profile) -> Result<Solid, CsgError>,
+) -> Result<Solid, CsgError> {
     flat.evaluate(
         |leaf| {
             let p = profile(leaf, faceted).map_err(|e| stmt.error(format!("profile: {e}")))?;
             make(p)
-                .map(Solid::primitive)
-                .map_err(|e| stmt.error(e.to_string()))
         },
         |op, mut parts| match op {
             Op2::Difference(_) => {
@@ -633,6 +690,29 @@ fn x_range(stmt: &Stmt, flat: &Flat, faceted: bool) -> Result<(f64, f64), CsgErr
                 .fold((f64::INFINITY, f64::NEG_INFINITY), |a, b| {
                     (a.0.min(b.0), a.1.max(b.1))
                 }),
+        },
+    )
+}
+
+/// How far a 2D geometry's corners reach ([`sliced::Reach`]), combined by its Booleans as
+/// [`x_range`] combines ranges: the corners of a difference are within its first operand's,
+/// an intersection's within the closest operand's.
+fn reach(stmt: &Stmt, flat: &Flat, faceted: bool, scale: DVec2) -> Result<sliced::Reach, CsgError> {
+    flat.evaluate(
+        |leaf| {
+            let p = profile(leaf, faceted).map_err(|e| stmt.error(format!("profile: {e}")))?;
+            Ok(sliced::Reach::of(&p.outline(0), scale))
+        },
+        |op, parts| {
+            let pick = |f: fn(f64, f64) -> f64, start: f64| sliced::Reach {
+                r_sqr: parts.iter().map(|r| r.r_sqr).fold(start, f),
+                delta_sqr: parts.iter().map(|r| r.delta_sqr).fold(start, f),
+            };
+            match op {
+                Op2::Difference(_) => parts[0],
+                Op2::Intersection(_) => pick(f64::min, f64::INFINITY),
+                _ => pick(f64::max, 0.0),
+            }
         },
     )
 }

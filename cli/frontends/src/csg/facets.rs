@@ -4,7 +4,7 @@
 use glam::{DVec2, DVec3};
 
 /// OpenSCAD's `GRID_FINE`: radii below it get 3 fragments.
-const GRID_FINE: f64 = 0.000_000_953_674_316_406_25;
+pub(super) const GRID_FINE: f64 = 0.000_000_953_674_316_406_25;
 
 /// OpenSCAD's resolution settings `$fn`, `$fa`, `$fs`.
 #[derive(Debug, Clone, Copy, PartialEq)]

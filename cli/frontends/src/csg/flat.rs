@@ -98,6 +98,14 @@ impl Flat {
         }
     }
 
+    /// The number of leaves.
+    pub fn leaf_count(&self) -> usize {
+        self.0
+            .iter()
+            .filter(|op| matches!(op, Op2::Leaf(_)))
+            .count()
+    }
+
     /// Evaluates the program, turning each leaf into a value with `leaf` and combining values with
     /// `union`, `difference` and `intersection` (each given the popped values in order).
     pub fn evaluate<T, E>(

@@ -26,8 +26,10 @@
 //! where the operand's field is a true distance); one operand built from convex parts by unions,
 //! differences and intersections is cut into convex pieces (`pieces.rs`) and summed piece by piece
 //! with the convex others; two non-convex operands are refused.
-//! Extrusions are exact sweeps of the profile (OpenSCAD's `slices` is ignored; `scale = 0` is a
-//! cone to the apex, `scale = [0, 1]` a wedge to a segment); `polyhedron` faces are cleaned
+//! Extrusions are exact sweeps of the profile (`scale = 0` is a cone to the apex,
+//! `scale = [0, 1]` a wedge to a segment), except that under OpenSCAD's facets a twisted or
+//! unevenly scaled `linear_extrude` of up to four 2D leaves is OpenSCAD's stack of flat slices
+//! with its slice count and diagonals (`sliced.rs`); `polyhedron` faces are cleaned
 //! as OpenSCAD takes them (`faces.rs`: repeated points merged, collapsed faces dropped, degenerate or
 //! twisted ones fanned), and 2D Booleans under an extrusion are replayed as 3D Booleans of the swept
 //! leaves. `import` reads mesh files (`.stl`, `.off`, `.obj`, `.ply`) as solids and `.dxf`
@@ -65,6 +67,7 @@ mod pieces;
 mod projection;
 mod resize;
 mod shadow;
+mod sliced;
 mod surface;
 mod text;
 
@@ -80,6 +83,8 @@ mod tests_lenient;
 mod tests_projection;
 #[cfg(test)]
 mod tests_resize;
+#[cfg(test)]
+mod tests_sliced;
 #[cfg(test)]
 mod tests_surface_png;
 #[cfg(test)]
