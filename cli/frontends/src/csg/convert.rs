@@ -16,6 +16,7 @@ use super::resize::resize;
 use super::sliced;
 use super::surface::surface;
 use super::text::{TextCache, text};
+use super::turned;
 use glam::{DVec2, DVec3};
 use solidkit_kernel::polyhedra::Polyhedron;
 use solidkit_kernel::primitive::{Extrude, MeshResolver, Primitive, Revolve};
@@ -535,12 +536,28 @@ fn node(
                 .then(|| stmt.resolution())
                 .transpose()?
                 .map(|res| facets::fragments(hi.max(0.0) - lo.min(0.0), res) as u32);
-            let mut s = sweep(stmt, &flat, faceted, |p| {
+            // A partial turn under OpenSCAD's facets is its straight steps too, from +x
+            // (`turned.rs`), for profiles of a few 2D leaves (each leaf is a mesh solid).
+            let partial =
+                (faceted && angle.abs() < 360.0 && flat.leaf_count() <= sliced::MAX_SLICED_LEAVES)
+                    .then(|| stmt.resolution())
+                    .transpose()?
+                    .map(|res| {
+                        let fragments = facets::fragments(hi.max(0.0) - lo.min(0.0), res);
+                        turned::step_count(fragments, angle)
+                    });
+            let mut s = sweep_solid(stmt, &flat, faceted, |p| {
+                if let Some(steps) = partial
+                    && let Some((v, f)) = turned::stepped_turn(&p.outline(0), angle.abs(), steps)
+                {
+                    return polyhedron(stmt, v, f);
+                }
                 match steps {
                     Some(n) => Revolve::faceted(p, n, 180.0),
                     None => Revolve::new(p, angle.abs()),
                 }
-                .map(|r| Primitive::Revolve(Arc::new(r)))
+                .map(|r| Solid::primitive(Primitive::Revolve(Arc::new(r))))
+                .map_err(|e| stmt.error(e.to_string()))
             })?;
             if mirrored {
                 s = s.rotate(DVec3::Z, 180.0);

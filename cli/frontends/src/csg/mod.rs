@@ -29,7 +29,8 @@
 //! Extrusions are exact sweeps of the profile (`scale = 0` is a cone to the apex,
 //! `scale = [0, 1]` a wedge to a segment), except that under OpenSCAD's facets a twisted or
 //! unevenly scaled `linear_extrude` of up to four 2D leaves is OpenSCAD's stack of flat slices
-//! with its slice count and diagonals (`sliced.rs`); `polyhedron` faces are cleaned
+//! with its slice count and diagonals (`sliced.rs`), and a partial `rotate_extrude` its straight
+//! steps (`turned.rs`; a full turn is the kernel's faceted revolution); `polyhedron` faces are cleaned
 //! as OpenSCAD takes them (`faces.rs`: repeated points merged, collapsed faces dropped, degenerate or
 //! twisted ones fanned), and 2D Booleans under an extrusion are replayed as 3D Booleans of the swept
 //! leaves. `import` reads mesh files (`.stl`, `.off`, `.obj`, `.ply`) as solids and `.dxf`
@@ -70,6 +71,7 @@ mod shadow;
 mod sliced;
 mod surface;
 mod text;
+mod turned;
 
 #[cfg(test)]
 mod fuzz;

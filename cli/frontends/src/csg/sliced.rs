@@ -245,7 +245,7 @@ pub(super) fn sliced_extrusion(
 
 /// The loops with their role (`true` for an outline, `false` for a hole, by the parity of the
 /// loops around each), outlines counter-clockwise and holes clockwise.
-fn oriented(loops: &[Vec<DVec2>]) -> Vec<(Vec<DVec2>, bool)> {
+pub(super) fn oriented(loops: &[Vec<DVec2>]) -> Vec<(Vec<DVec2>, bool)> {
     loops
         .iter()
         .enumerate()
