@@ -115,13 +115,21 @@ impl EdgeTable {
         self.edge_count
     }
 
+    /// Number of vertex buckets (one past the largest vertex of any edge).
+    pub(crate) fn bucket_count(&self) -> usize {
+        self.starts.len() - 1
+    }
+
+    /// The undirected edges whose smaller vertex is `v`, in ascending larger-vertex order.
+    pub(crate) fn edges_at(&self, v: usize) -> impl Iterator<Item = Edge<'_>> {
+        self.entries[self.starts[v]..self.starts[v + 1]]
+            .chunk_by(|x, y| x >> 32 == y >> 32)
+            .map(move |run| Edge { lo: v as u32, run })
+    }
+
     /// The undirected edges in ascending (smaller, larger) vertex order.
     pub(crate) fn edges(&self) -> impl Iterator<Item = Edge<'_>> {
-        self.starts.windows(2).enumerate().flat_map(move |(v, w)| {
-            self.entries[w[0]..w[1]]
-                .chunk_by(|x, y| x >> 32 == y >> 32)
-                .map(move |run| Edge { lo: v as u32, run })
-        })
+        (0..self.bucket_count()).flat_map(move |v| self.edges_at(v))
     }
 }
 

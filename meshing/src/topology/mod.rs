@@ -4,9 +4,10 @@
 //!
 //! The report is computed directly from an [`IndexedMesh`], not through the half-edge mesh, so it
 //! works on any input, however broken. Every step is iterative and at worst O(n log n): directed
-//! edges are sorted by undirected key (`edges.rs`), shells and vertex fans use union-find
-//! (`shells.rs`, `vertices.rs`), and the measures run in deterministic parallel chunks
-//! (`measures.rs`).
+//! edges are sorted by undirected key (`edges.rs`), shells and vertex fans use a concurrent
+//! union-find whose roots are each set's smallest element (`atomic_union_find.rs`, so the result
+//! does not depend on the threads; `shells.rs`, `vertices.rs`), and the measures run in
+//! deterministic parallel chunks (`measures.rs`).
 //!
 //! # Unusable triangles
 //!
@@ -25,13 +26,13 @@
 //! has; [`TopologyReport::with_options`] can skip it (it costs about as much as the rest of the
 //! report together).
 
+mod atomic_union_find;
 mod defects;
 mod edges;
 mod measures;
 mod polygons;
 mod shells;
 mod text;
-mod union_find;
 mod verdict;
 mod vertices;
 

@@ -4,7 +4,9 @@
 //! vertices, edges and faces and whether it has a defect, giving the genus of every shell that is a
 //! closed, oriented manifold (χ = 2 − 2g).
 
-use super::union_find::UnionFind;
+use super::atomic_union_find::AtomicUnionFind;
+use rayon::prelude::*;
+use std::sync::atomic::{AtomicUsize, Ordering};
 
 /// Marker for "no triangle" in [`Shells::first_triangle`].
 const NONE: usize = usize::MAX;
@@ -23,19 +25,25 @@ pub(crate) struct Shells {
 impl Shells {
     /// Shells of `triangles` (all indices below `vertex_count`).
     pub(crate) fn of(triangles: &[[u32; 3]], vertex_count: usize) -> Self {
-        let mut first_triangle = vec![NONE; vertex_count];
-        let mut sets = UnionFind::new(triangles.len());
-        for (t, tri) in triangles.iter().enumerate() {
+        // In parallel: each vertex's first (smallest) triangle, then every triangle joined to the
+        // first triangle of each of its vertices (so all triangles at a vertex are joined).
+        let first: Vec<AtomicUsize> = (0..vertex_count).map(|_| AtomicUsize::new(NONE)).collect();
+        triangles.par_iter().enumerate().for_each(|(t, tri)| {
             for &v in tri {
-                let first = &mut first_triangle[v as usize];
-                if *first == NONE {
-                    *first = t;
-                } else {
-                    sets.union(*first, t);
+                first[v as usize].fetch_min(t, Ordering::Relaxed);
+            }
+        });
+        let first_triangle: Vec<usize> = first.into_iter().map(AtomicUsize::into_inner).collect();
+        let sets = AtomicUnionFind::new(triangles.len());
+        triangles.par_iter().enumerate().for_each(|(t, tri)| {
+            for &v in tri {
+                let f = first_triangle[v as usize];
+                if f != t {
+                    sets.union(f, t);
                 }
             }
-        }
-        let (of_triangle, count) = number_sets(&mut sets, triangles.len());
+        });
+        let (of_triangle, count) = number_sets(&sets, triangles.len());
         Self {
             of_triangle,
             first_triangle,
@@ -67,19 +75,26 @@ impl Shells {
     }
 }
 
-/// Numbers the sets `0..` in order of their smallest element.
-fn number_sets(sets: &mut UnionFind, len: usize) -> (Vec<u32>, usize) {
+/// Numbers the sets `0..` in order of their smallest element (each set's root, see
+/// [`AtomicUnionFind`]).
+fn number_sets(sets: &AtomicUnionFind, len: usize) -> (Vec<u32>, usize) {
+    let roots: Vec<u32> = (0..len)
+        .into_par_iter()
+        .map(|x| sets.find(x) as u32)
+        .collect();
     let mut number_of_root = vec![u32::MAX; len];
-    let mut of_element = Vec::with_capacity(len);
     let mut count = 0usize;
-    for x in 0..len {
-        let root = sets.find(x);
-        if number_of_root[root] == u32::MAX {
-            number_of_root[root] = u32::try_from(count).unwrap_or(u32::MAX);
+    for (x, &root) in roots.iter().enumerate() {
+        if root as usize == x {
+            number_of_root[x] = u32::try_from(count).unwrap_or(u32::MAX);
             count += 1;
         }
-        of_element.push(number_of_root[root]);
     }
+    // A root is its set's smallest element, numbered before any element that points to it.
+    let of_element = roots
+        .par_iter()
+        .map(|&root| number_of_root[root as usize])
+        .collect();
     (of_element, count)
 }
 
@@ -154,6 +169,40 @@ mod tests {
         assert_eq!(shells.of_vertex(4), Some(0));
         assert_eq!(shells.of_vertex(9), None);
         assert!(!shells.is_referenced(8));
+    }
+
+    #[test]
+    fn shells_do_not_depend_on_the_thread_count() {
+        // 2000 strips of 50 triangles each, the triangles of all strips interleaved, so that
+        // concurrent unions race on every strip: the numbering is the one-thread numbering.
+        let (strips, len) = (2000u32, 50u32);
+        let tris: Vec<[u32; 3]> = (0..len)
+            .flat_map(|k| (0..strips).map(move |s| [s * 100 + k, s * 100 + k + 1, s * 100 + k + 2]))
+            .collect();
+        let run = |threads| {
+            let pool = rayon::ThreadPoolBuilder::new()
+                .num_threads(threads)
+                .build()
+                .unwrap();
+            let shells = pool.install(|| Shells::of(&tris, (strips * 100) as usize));
+            (
+                shells.count(),
+                (0..tris.len())
+                    .map(|t| shells.of_triangle(t))
+                    .collect::<Vec<_>>(),
+            )
+        };
+        let one = run(1);
+        assert_eq!(one.0, strips as usize);
+        assert!(
+            one.1
+                .iter()
+                .enumerate()
+                .all(|(t, &s)| s == t % strips as usize)
+        );
+        for _ in 0..3 {
+            assert_eq!(run(4), one);
+        }
     }
 
     #[test]
