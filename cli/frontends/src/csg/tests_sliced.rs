@@ -13,6 +13,21 @@ fn extrusion(args: &str, body: &str) -> String {
     format!("linear_extrude({args}, convexity = 1, $fn = 0, $fa = 12, $fs = 2) {{ {body} }}")
 }
 
+/// `text` under OpenSCAD's facets meshes closed with a volume within `tolerance` of
+/// `openscad` (OpenSCAD's render); the volume.
+fn meshes_as_openscad(text: &str, openscad: f64, tolerance: f64) -> f64 {
+    let (s, w) = warned(text, Facets::OpenScad);
+    assert!(w.is_empty(), "{text}: {w:?}");
+    let (m, report) = mesh(&s, 128);
+    assert!(report.is_closed_manifold(), "{text}: {report:?}");
+    let v = signed_volume(&m);
+    assert!(
+        rel_err(v, openscad) < tolerance,
+        "{text}: {v} vs OpenSCAD's {openscad}"
+    );
+    v
+}
+
 #[test]
 fn twisted_extrusions_are_openscads_slices() {
     let square = "square(size = [10, 10], center = true);";
@@ -43,15 +58,7 @@ fn twisted_extrusions_are_openscads_slices() {
     ];
     for (args, body, openscad, exact) in cases {
         let text = extrusion(args, body);
-        let (s, w) = warned(&text, Facets::OpenScad);
-        assert!(w.is_empty(), "{text}: {w:?}");
-        let (m, report) = mesh(&s, 128);
-        assert!(report.is_closed_manifold(), "{text}: {report:?}");
-        let v = signed_volume(&m);
-        assert!(
-            rel_err(v, openscad) < 0.01,
-            "{text}: {v} vs OpenSCAD's {openscad}"
-        );
+        let v = meshes_as_openscad(&text, openscad, 0.01);
         if exact > 0.0 {
             // The exact twisted solid is not OpenSCAD's, and exact facets keep it.
             assert!(rel_err(v, exact) > 0.03, "{text}: {v} is the exact {exact}");
@@ -135,15 +142,7 @@ fn partial_turns_are_openscads_steps() {
         let text = format!(
             "rotate_extrude(angle = {angle}, convexity = 1, $fn = {fn_}, $fa = 12, $fs = 2) {{ {body} }}"
         );
-        let (s, w) = warned(&text, Facets::OpenScad);
-        assert!(w.is_empty(), "{text}: {w:?}");
-        let (m, report) = mesh(&s, 128);
-        assert!(report.is_closed_manifold(), "{text}: {report:?}");
-        let v = signed_volume(&m);
-        assert!(
-            rel_err(v, openscad) < 0.003,
-            "{text}: {v} vs OpenSCAD's {openscad}"
-        );
+        meshes_as_openscad(&text, openscad, 0.003);
         let (s, _) = warned(&text, Facets::Exact);
         let e = signed_volume(&mesh(&s, 128).0);
         assert!(
