@@ -14,15 +14,12 @@ use super::contour::{Grid2, contour, region};
 use super::error::CsgError;
 use super::flat::Flat;
 use super::parser::Stmt;
+use super::projection_grid::{RESOLUTION, SIMPLIFY_CELLS};
 use super::shadow::shadow;
 use glam::DVec2;
 use solidkit_kernel::eval::Pruned;
 use solidkit_kernel::{Aabb, Program, Solid};
 
-/// Cells of the 2D sampling grid along the longer side of the children's box.
-pub const RESOLUTION: usize = 512;
-/// Loops are simplified within this fraction of a cell.
-pub const SIMPLIFY_CELLS: f64 = 0.05;
 /// Bisection steps placing a slice crossing (the cell over 2³⁰).
 const BISECTIONS: usize = 30;
 

@@ -10,9 +10,11 @@
 //! ([`BBOX_RESOLUTION`] cells along the longest side).
 
 use super::bounds::{tight_bbox, touched_bbox};
-use super::convert::{Ctx, Geom, meshed_points, sweep};
 use super::error::CsgError;
+use super::geom::{Ctx, Geom};
+use super::operand::meshed_points;
 use super::parser::{Stmt, Value};
+use super::sweep::sweep;
 use glam::DVec3;
 use solidkit_kernel::primitive::{Extrude, Primitive};
 use solidkit_kernel::{Aabb, Solid};

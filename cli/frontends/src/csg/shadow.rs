@@ -6,11 +6,11 @@
 //! inside; each crossing lies where the union of the triangles along the grid edge ends.
 
 use super::contour::{Grid2, contour, region};
-use super::convert::mesh_of;
 use super::error::CsgError;
 use super::flat::Flat;
+use super::operand::mesh_of;
 use super::parser::Stmt;
-use super::projection::{RESOLUTION, SIMPLIFY_CELLS};
+use super::projection_grid::{RESOLUTION, SIMPLIFY_CELLS};
 use glam::{DVec2, DVec3};
 use solidkit_kernel::primitive::{MeshSource, Primitive, Shape};
 use solidkit_kernel::triangulate::triangulate_polygon;
