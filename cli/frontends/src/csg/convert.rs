@@ -140,13 +140,25 @@ fn group(
         } else {
             ("3D", "2D")
         };
+        let intersection = matches!(op(0), Op2::Intersection(_));
         ctx.warn(
             stmt,
             format!(
                 "mixing 2D and 3D objects is not supported: the first child is {kept}, \
-                 the {dropped} children are ignored"
+                 the {dropped} children are ignored{}",
+                if intersection {
+                    " and leave the intersection empty"
+                } else {
+                    ""
+                }
             ),
         );
+        // OpenSCAD 2021.01 keeps an ignored child of `intersection()` as an empty operand, so
+        // the whole intersection is empty (measured: a cube intersected with a circle renders
+        // nothing, in either order).
+        if intersection {
+            return Ok(Geom::Empty);
+        }
     }
     if !flats.is_empty() {
         return Ok(Geom::Flat(Flat::combine(flats, op)));

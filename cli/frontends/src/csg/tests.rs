@@ -245,6 +245,28 @@ fn extrusions_and_groups_ignore_what_openscad_ignores() {
         warned(&format!("{extrude}) square(size = [2, 2]);"), Facets::Exact).0
     );
     assert_eq!(w.len(), 1, "{w:?}");
+    // In `intersection()` an ignored child is an empty operand: nothing is left (OpenSCAD
+    // 2021.01 renders nothing for a cube intersected with a circle, in either order), so a
+    // group holding it keeps only the other cube.
+    for children in [
+        "cube(size = [5, 5, 5]); circle(r = 2);",
+        "circle(r = 2); cube(size = [5, 5, 5]);",
+    ] {
+        let (s, w) = warned(
+            &format!("group() {{ intersection() {{ {children} }} cube(size = [1, 1, 1]); }}"),
+            Facets::Exact,
+        );
+        assert_eq!(
+            s,
+            warned("cube(size = [1, 1, 1]);", Facets::Exact).0,
+            "{children}"
+        );
+        assert_eq!(w.len(), 1, "{w:?}");
+        assert!(
+            w[0].ends_with("ignored and leave the intersection empty"),
+            "{w:?}"
+        );
+    }
 }
 
 /// `linear_extrude(scale = 0)` is the cone to a point: a square pyramid of volume a²h/3, and a
