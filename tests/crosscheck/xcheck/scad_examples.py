@@ -134,6 +134,9 @@ def run_one(name: str, scad: Path, out: Path, solidkit: Path, options: dict) -> 
         res["openscad_status"] = "timeout"
     elif rc != 0:
         res["openscad_status"] = _openscad_refusal(err) or f"exit {rc}: {_tail(err)}"
+    elif len(meshio.read_stl(stl)[1]) == 0:
+        # OpenSCAD exits 0 with an STL of no facets when every object is skipped (inf sizes).
+        res["openscad_status"] = "empty"
     else:
         res["openscad_status"] = "rendered"
     cmd = [str(solidkit), "--threads", "1", "mesh", str(csg), "--facets", "openscad", "--no-progress",

@@ -46,9 +46,11 @@ fn sphere_operand(tree: &Tree, mut k: usize) -> Result<Option<(f64, DVec3)>, Csg
 }
 
 /// `minkowski()`: of convex operands, the hull of the sums of their points (exact: the sum of
-/// convex sets is the hull of the sums of their vertices); with a sphere operand and exact
-/// facets, or with one non-convex operand and a sphere, an offset of the other operand by the
-/// sphere's radius. Anything else is refused.
+/// convex sets is the hull of the sums of their vertices); of one operand made of convex pieces
+/// and convex others (under OpenSCAD's facets a sphere is one of those), the union of the
+/// pieces' sums; with a sphere operand and exact facets, or with one non-convex operand and a
+/// sphere otherwise, an offset of the other operand by the sphere's radius. Anything else is
+/// refused.
 pub(super) fn minkowski(
     tree: &Tree,
     kids: &[usize],
@@ -66,6 +68,16 @@ pub(super) fn minkowski(
         return Ok((g, Some(h)));
     }
     let all_convex = ops.iter().all(|(_, h, _)| h.convex);
+    // OpenSCAD's faceted sphere is a convex polyhedron like any other: where the non-convex
+    // operand is made of convex pieces, the sum piece by piece is OpenSCAD's own result (its
+    // `minkowski3-erosion` test), and the exact offset below is only the fallback.
+    if ctx.facets == Facets::OpenScad
+        && dim == 3
+        && !all_convex
+        && let Some(g) = minkowski_by_pieces(stmt, &ops)?
+    {
+        return Ok((g, None));
+    }
     let mut spheres = Vec::new();
     if dim == 3 && (ctx.facets == Facets::Exact || !all_convex) {
         for (n, (_, _, k)) in ops.iter().enumerate() {

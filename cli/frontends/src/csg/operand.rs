@@ -153,7 +153,6 @@ pub(super) fn operands(
             ignored = true;
             continue;
         }
-        dim = Some(d);
         let info = match info {
             Some(h) => h,
             None => Hullable {
@@ -162,6 +161,13 @@ pub(super) fn operands(
                 pieces: None,
             },
         };
+        // A child with no points (an intersection of disjoint parts, a difference that removes
+        // everything) is skipped like an empty one, as OpenSCAD skips it: `minkowski()` of it
+        // and a cube is the cube.
+        if info.points.is_empty() {
+            continue;
+        }
+        dim = Some(d);
         out.push((g, info, k));
     }
     if ignored {

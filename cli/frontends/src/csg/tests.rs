@@ -394,6 +394,52 @@ fn minkowski_of_convex_operands_and_spheres() {
     assert!(e.to_string().starts_with("2:1: minkowski: "), "{e}");
 }
 
+/// OpenSCAD's `minkowski3-erosion` test: a union of three boxes eroded by 1 (the difference
+/// with the Minkowski sum of its complement in a 25-cube and a `$fn = 12` sphere). Under
+/// OpenSCAD's facets the sphere is its convex polyhedron and the complement is summed piece by
+/// piece, so the volume is OpenSCAD 2021.01's render, 171.975; with exact facets the sphere is an
+/// exact offset and the eroded solid is larger.
+#[test]
+fn minkowski_erosion_by_a_faceted_sphere() {
+    let object = "group() { multmatrix([[1, 0, 0, -5], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]) cube(size = [10, 5, 5]); \
+                  multmatrix([[1, 0, 0, 0], [0, 1, 0, -5], [0, 0, 1, 0], [0, 0, 0, 1]]) cube(size = [5, 10, 5]); \
+                  cube(size = [5, 5, 10]); }";
+    let text = format!(
+        "difference() {{ {object} minkowski() {{ difference() {{ cube(size = [25, 25, 25], center = true); {object} }} \
+         sphere($fn = 12, r = 1); }} }}"
+    );
+    let volume = |facets| {
+        let (s, _) = warned(&text, facets);
+        let (m, report) = mesh(&s, 192);
+        assert!(report.is_closed_manifold(), "{report:?}");
+        assert_eq!((report.shells, report.genus), (1, Some(0)));
+        signed_volume(&m)
+    };
+    let faceted = volume(Facets::OpenScad);
+    assert!(rel_err(faceted, 171.975) < 0.002, "{faceted}");
+    let exact = volume(Facets::Exact);
+    assert!(rel_err(exact, 171.975) > 0.02, "{exact}");
+}
+
+/// A child of `minkowski()` or `hull()` with no points (the intersection of two disjoint cubes)
+/// is skipped as OpenSCAD skips it: the result is the other child, a unit cube (OpenSCAD's
+/// testdata `nullspace-minkowski`, rendered by OpenSCAD 2021.01 as that cube).
+#[test]
+fn empty_operands_of_minkowski_and_hull_are_skipped() {
+    let empty = "intersection() { multmatrix([[1, 0, 0, -2], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]) cube(1); \
+                 multmatrix([[1, 0, 0, 2], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]) cube(1); }";
+    for op in ["minkowski", "hull"] {
+        for facets in [Facets::Exact, Facets::OpenScad] {
+            let (s, w) = warned(&format!("{op}() {{ {empty} cube(1); }}"), facets);
+            assert!(w.is_empty(), "{op}: {w:?}");
+            let (m, report) = mesh(&s, 64);
+            assert!(report.is_closed_manifold(), "{op}: {report:?}");
+            let v = signed_volume(&m);
+            assert!(rel_err(v, 1.0) < 0.01, "{op}: {v}");
+        }
+    }
+}
+
 /// `minkowski()` of a difference (a square ring 4 × 4 × 1 with a 2 × 2 hole) and a convex
 /// operand (a unit cube, then OpenSCAD's square-faceted cylinder of radius √2 / 2 turned by
 /// 45°, the same unit square): the ring grows by half a unit on every side, its hole shrinks to
