@@ -138,6 +138,7 @@ impl PyMesh {
             "target_error": asked.target_error,
             "simplify_collapses": meshed.simplified.map(|s| s.collapses),
             "cells": meshed.spec.cells,
+            "cell": meshed.spec.cell,
             "refinement": meshed.factor,
             "samples_total": meshed.samples_total,
             "thin": meshed.stats.thin,
@@ -175,6 +176,9 @@ pub fn report_dict<'py>(
     if !extra.as_object().is_none_or(|m| m.is_empty()) {
         warnings
             .extend(warnings::empty(&report).or_else(|| warnings::not_closed_manifold(&report)));
+        if let Some(cell) = extra.get("cell").and_then(Value::as_f64) {
+            warnings.extend(warnings::fragments(&report, cell));
+        }
     }
     let mut v = serde_json::to_value(&report).map_err(errors::other)?;
     if let (Value::Object(map), Value::Object(more)) = (&mut v, extra) {

@@ -78,7 +78,11 @@ pub fn run(a: &MeshArgs) -> Result<u8> {
         self_intersections: !a.no_self_intersections,
     });
     let report_s = report_start.elapsed().as_secs_f64();
-    if let Some(w) = warnings::empty(&r).or_else(|| warnings::not_closed_manifold(&r)) {
+    let found = warnings::empty(&r).or_else(|| warnings::not_closed_manifold(&r));
+    for w in found
+        .into_iter()
+        .chain(warnings::fragments(&r, meshed.spec.cell))
+    {
         let w = format!("{input}: {w}");
         crate::output::errln!("warning: {}", crate::escape::one_line(&w));
         warnings.push(w);
@@ -123,6 +127,7 @@ pub fn run(a: &MeshArgs) -> Result<u8> {
             ("report_time_s", json!(report_s)),
             ("resolution", json!(resolution)),
             ("cells", json!(fine.cells)),
+            ("cell", json!(fine.cell)),
             ("refinement", json!(meshed.factor)),
             ("samples_total", json!(meshed.samples_total)),
             ("thin", json!(stats.thin)),

@@ -1,5 +1,6 @@
 //! Warnings the pipeline attaches to a result that may be incomplete or wrong: open mesh
-//! operands, and a polygonization that is empty or not a closed manifold.
+//! operands, a polygonization that is empty or not a closed manifold, and fragments split off by
+//! features thinner than a cell.
 
 use crate::TopologyReport;
 use solidkit_kernel::primitive::MeshSource;
@@ -60,4 +61,29 @@ pub fn beyond_box(bbox: &solidkit_kernel::Aabb) -> String {
         "the solid reaches beyond its bounding box [{:e}, {:e}, {:e}]..[{:e}, {:e}, {:e}] to the edge of the grid: the mesh is cut and capped there, so part of the solid may be missing",
         bbox.min.x, bbox.min.y, bbox.min.z, bbox.max.x, bbox.max.y, bbox.max.z
     )
+}
+
+/// Shells at most this many cells across (bounding-box diagonal) are fragments.
+pub const FRAGMENT_CELLS: f64 = 2.0;
+
+/// The warning for shells at most [`FRAGMENT_CELLS`] cells of `cell` across beside larger ones:
+/// pieces the grid split off a solid where a feature thinner than a cell joins them (the tip of a
+/// sharp edge that crosses the grid diagonally, a neck, a fin), or parts smaller than the grid
+/// can shape. Either way the shell count, and the fragments' shape, are not to be trusted; a
+/// finer grid moves or removes them.
+pub fn fragments(report: &TopologyReport, cell: f64) -> Option<String> {
+    let small = |b: &[glam::DVec3; 2]| (b[1] - b[0]).length() <= FRAGMENT_CELLS * cell;
+    let count = report.shell_boxes.iter().filter(|b| small(b)).count();
+    let first = report.shell_boxes.iter().find(|b| small(b))?;
+    (count < report.shell_boxes.len()).then(|| {
+        let c = (first[0] + first[1]) / 2.0;
+        format!(
+            "{count} of the {} shells are at most {FRAGMENT_CELLS} cells ({:.6}) across (one near {:.6}, {:.6}, {:.6}): fragments split off where a feature thinner than a cell (a sharp edge crossing the grid diagonally, a neck, a fin) joins them to the solid, or parts too small for the grid; the shell count may be wrong; raise --resolution",
+            report.shell_boxes.len(),
+            FRAGMENT_CELLS * cell,
+            c.x,
+            c.y,
+            c.z
+        )
+    })
 }

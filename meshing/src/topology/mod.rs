@@ -116,6 +116,10 @@ pub struct TopologyReport {
     pub self_intersections_method: Option<SelfIntersectionsMethod>,
     /// The first few offending items of each kind.
     pub examples: Offenders,
+    /// Each shell's bounding box (`[min, max]`, in shell order) when there are several shells,
+    /// else empty; for [`crate::pipeline::warnings::fragments`] (not serialised).
+    #[serde(skip)]
+    pub shell_boxes: Vec<[glam::DVec3; 2]>,
 }
 
 /// How a report knows its self-intersection count.
@@ -246,6 +250,11 @@ impl TopologyReport {
         let (edges, faces) = (table.edge_count(), tris.len());
         let genus_per_shell = tally.genus();
         let genus = total_genus(&genus_per_shell);
+        let shell_boxes = if shells.count() > 1 {
+            shell_boxes(mesh, &shells)
+        } else {
+            Vec::new()
+        };
         Self {
             vertices,
             edges,
@@ -269,6 +278,7 @@ impl TopologyReport {
             self_intersections: None,
             self_intersections_method: None,
             examples,
+            shell_boxes,
         }
     }
 
@@ -282,6 +292,18 @@ impl TopologyReport {
     pub fn is_valid_solid(&self) -> bool {
         self.is_closed_manifold() && self.self_intersections.unwrap_or(0) == 0
     }
+}
+
+/// The bounding box of each shell of `mesh`, from its referenced vertices.
+fn shell_boxes(mesh: &IndexedMesh, shells: &Shells) -> Vec<[glam::DVec3; 2]> {
+    let mut boxes = vec![[glam::DVec3::INFINITY, glam::DVec3::NEG_INFINITY]; shells.count()];
+    for (v, p) in mesh.positions.iter().enumerate() {
+        if let Some(b) = shells.of_vertex(v).and_then(|s| boxes.get_mut(s)) {
+            b[0] = b[0].min(*p);
+            b[1] = b[1].max(*p);
+        }
+    }
+    boxes
 }
 
 /// The usable triangles (see [`is_usable`]), borrowed when all are.
