@@ -330,7 +330,12 @@ fn node(
                 .into_iter()
                 .map(|f| f.into_iter().rev().collect())
                 .collect();
-            let (faces, cleaned) = super::faces::clean_faces(&points, faces);
+            let (mut faces, cleaned) = super::faces::clean_faces(&points, faces);
+            if super::faces::inside_out(&points, &faces) {
+                for f in &mut faces {
+                    f.reverse();
+                }
+            }
             if let Some(message) = cleaned.message() {
                 ctx.warn(stmt, message);
             }

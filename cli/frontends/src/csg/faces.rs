@@ -12,6 +12,9 @@
 //!   fold) becomes the fan of triangles from its first corner, as OpenSCAD splits it: its edges
 //!   stay those of the face, so the mesh stays closed, and zero-area triangles enclose nothing.
 //!
+//! A polyhedron listed inside out as a whole (closed, every edge used once each way, negative
+//! volume) is reversed: OpenSCAD renders it as the solid it bounds ([`inside_out`]).
+//!
 //! A face that still repeats a corner elsewhere, or indexes past the points, is left for the
 //! kernel to refuse with its usual error.
 
@@ -109,6 +112,30 @@ pub(super) fn clean_faces(points: &[DVec3], faces: Vec<Vec<u32>>) -> (Vec<Vec<u3
         }
     }
     (out, report)
+}
+
+/// Whether `faces` (counter-clockwise from outside, the kernel's order) close a surface whose
+/// every edge is used once in each direction and that encloses a negative volume: a polyhedron
+/// listed inside out as a whole. OpenSCAD renders such a polyhedron as the solid it bounds (its
+/// `intersection-tests` cut an inside-out octahedron and keep the upper half), so the caller
+/// reverses it.
+pub(super) fn inside_out(points: &[DVec3], faces: &[Vec<u32>]) -> bool {
+    let mut uses: HashMap<(u32, u32), i32> = HashMap::new();
+    let mut six = 0.0;
+    for f in faces {
+        for k in 0..f.len() {
+            let (a, b) = (f[k], f[(k + 1) % f.len()]);
+            let (key, d) = if a < b { ((a, b), 1) } else { ((b, a), -1) };
+            *uses.entry(key).or_default() += d;
+        }
+        let p = |k: usize| points.get(f[k] as usize).copied();
+        for k in 1..f.len().saturating_sub(1) {
+            if let (Some(a), Some(b), Some(c)) = (p(0), p(k), p(k + 1)) {
+                six += a.dot(b.cross(c));
+            }
+        }
+    }
+    !faces.is_empty() && uses.values().all(|&d| d == 0) && six < 0.0
 }
 
 /// Whether no index repeats in `f`.

@@ -421,6 +421,33 @@ fn minkowski_erosion_by_a_faceted_sphere() {
     assert!(rel_err(exact, 171.975) > 0.02, "{exact}");
 }
 
+/// A polyhedron listed inside out as a whole is the solid it bounds, as OpenSCAD renders it: its
+/// `intersection-tests` intersect an inside-out octahedron (scaled by 10/√2) with a 20-cube
+/// above z = 0 and keep the upper half, volume (4/3)·r³/2 = 235.70 for r = 10/√2 (OpenSCAD
+/// 2021.01's render: 235.703). An octahedron with one face flipped is left to the kernel.
+#[test]
+fn inside_out_polyhedra_are_reversed() {
+    let points = "[[1, 0, 0], [-1, 0, 0], [0, 1, 0], [0, -1, 0], [0, 0, 1], [0, 0, -1]]";
+    let inverted =
+        "[[0, 2, 4], [0, 5, 2], [0, 4, 3], [0, 3, 5], [1, 4, 2], [1, 2, 5], [1, 3, 4], [1, 5, 3]]";
+    let s = 10.0 / 2f64.sqrt();
+    let text = format!(
+        "intersection() {{ multmatrix([[{s}, 0, 0, 0], [0, {s}, 0, 0], [0, 0, {s}, 0], [0, 0, 0, 1]]) \
+         polyhedron(points = {points}, faces = {inverted}); \
+         multmatrix([[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 10], [0, 0, 0, 1]]) cube(size = [20, 20, 20], center = true); }}"
+    );
+    for facets in [Facets::Exact, Facets::OpenScad] {
+        let (solid, w) = warned(&text, facets);
+        assert!(w.is_empty(), "{w:?}");
+        let (m, report) = mesh(&solid, 128);
+        assert!(report.is_closed_manifold(), "{report:?}");
+        let v = signed_volume(&m);
+        let exact = 4.0 / 3.0 * s.powi(3) / 2.0;
+        assert!(rel_err(v, exact) < 0.01, "{v} vs {exact}");
+        assert!(rel_err(v, 235.703) < 0.01, "{v}");
+    }
+}
+
 /// A child of `minkowski()` or `hull()` with no points (the intersection of two disjoint cubes)
 /// is skipped as OpenSCAD skips it: the result is the other child, a unit cube (OpenSCAD's
 /// testdata `nullspace-minkowski`, rendered by OpenSCAD 2021.01 as that cube).
