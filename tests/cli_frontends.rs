@@ -79,6 +79,45 @@ fn convert_writes_the_json_tree_of_a_script() {
     assert_eq!(std::fs::read_to_string(&again).expect("again"), written);
 }
 
+/// `convert --facets openscad` writes OpenSCAD's faceted construction (a twisted extrusion as its
+/// stack of flat slices: a polyhedron), the default the exact twisted sweep; parts OpenSCAD skips
+/// are warned about on standard error, as `mesh` does.
+#[test]
+fn convert_takes_facets_and_says_what_it_skips() {
+    let dir = tempfile::tempdir().expect("temp dir");
+    let csg = dir.path().join("twisted.csg");
+    std::fs::write(
+        &csg,
+        "linear_extrude(height = 20, twist = 90, slices = 8) square(size = [10, 10], center = true);
+\
+         linear_extrude(height = 0) square(size = [1, 1]);
+",
+    )
+    .expect("write csg");
+    let tree = |facets: &str| {
+        let out = dir.path().join(format!("{facets}.json"));
+        let o = solidkit(&[
+            "convert",
+            path_str(&csg),
+            "--facets",
+            facets,
+            "-o",
+            path_str(&out),
+        ]);
+        assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+        let stderr = String::from_utf8_lossy(&o.stderr).into_owned();
+        (std::fs::read_to_string(&out).expect("written tree"), stderr)
+    };
+    let (faceted, warned) = tree("openscad");
+    let (exact, _) = tree("exact");
+    assert!(faceted.contains("\"polyhedron\""), "{faceted}");
+    assert!(!exact.contains("\"polyhedron\""), "{exact}");
+    assert!(
+        warned.contains("warning: ") && warned.contains("twisted.csg:2:"),
+        "{warned}"
+    );
+}
+
 #[test]
 fn hostile_and_broken_scripts_fail_with_one_located_line() {
     let dir = tempfile::tempdir().expect("temp dir");

@@ -381,6 +381,11 @@ pub struct ConvertArgs {
     /// Write the JSON tree here (replaced atomically).
     #[arg(short, long)]
     pub output: PathBuf,
+    /// How round primitives of OpenSCAD `.csg` inputs are built: exact (true spheres, cylinders)
+    /// or faceted exactly as OpenSCAD does (the tree then holds OpenSCAD's polyhedra, slices and
+    /// steps, as `mesh --facets openscad` meshes them).
+    #[arg(long, value_enum, default_value_t = FacetsArg::Exact)]
+    pub facets: FacetsArg,
     /// Let the files the input names (`mesh` and `png` paths) come from DIR too (repeatable).
     /// Without it they must lie inside the input's own folder: relative paths, no `..` or
     /// symbolic link leading out, no absolute paths.
