@@ -88,10 +88,10 @@ fn convert_takes_facets_and_says_what_it_skips() {
     let csg = dir.path().join("twisted.csg");
     std::fs::write(
         &csg,
-        "linear_extrude(height = 20, twist = 90, slices = 8) square(size = [10, 10], center = true);
-\
-         linear_extrude(height = 0) square(size = [1, 1]);
-",
+        concat!(
+            "linear_extrude(height = 20, twist = 90, slices = 8) square(size = [10, 10], center = true);\n",
+            "linear_extrude(height = 0) square(size = [1, 1]);\n",
+        ),
     )
     .expect("write csg");
     let tree = |facets: &str| {
