@@ -283,8 +283,15 @@ fn bad_imports_and_offsets_exit_2_with_a_located_line() {
     assert_located_error(
         &[(
             "model.csg",
-            "linear_extrude(height = 1) offset(r = -0.1) polygon(points = [[0, 0], [2, 0], [1, 0.5], [2, 2], [0, 2]]);",
+            "linear_extrude(height = 1) offset(r = 1e300) difference() { square(2); square(1); }",
         )],
-        "model.csg:1:28: offset: shrinking or mitring",
+        "model.csg:1:28: offset: an offset of 1e300 is beyond",
+    );
+    assert_located_error(
+        &[(
+            "model.csg",
+            "linear_extrude(height = 1) minkowski() { square([1e200, 1]); difference() { square(2); square(1); } }",
+        )],
+        "model.csg:1:28: minkowski: a 2D coordinate",
     );
 }

@@ -595,9 +595,11 @@ fn node(
             resize(stmt, geom, faceted, ctx)
         }
         "offset" => {
-            let how = if stmt.arg("r", None).is_some() {
+            // OpenSCAD: `r` (the one positional argument) if given, else `delta` if given,
+            // else `r = 1`.
+            let how = if stmt.arg("r", Some(0)).is_some() || stmt.arg("delta", None).is_none() {
                 Offset::Round {
-                    r: stmt.num("r", None, 1.0)?,
+                    r: stmt.num("r", Some(0), 1.0)?,
                     res: stmt.resolution()?,
                 }
             } else {
@@ -609,7 +611,7 @@ fn node(
             let Some(flat) = flat_children(stmt, children, ctx) else {
                 return Ok(Geom::Empty);
             };
-            Ok(offset(flat, how)
+            Ok(offset(flat, how, ctx.facets)
                 .map_err(|e| stmt.error(e))?
                 .map_or(Geom::Empty, Geom::Flat))
         }

@@ -1,12 +1,15 @@
 //! `minkowski()`: the hull of the sums of convex operands' points, summed piece by piece for one
-//! operand cut into convex pieces, or an offset by a sphere operand's radius.
+//! operand cut into convex pieces, or an offset by a sphere operand's radius; 2D operands of any
+//! shape through their polygons ([`super::minkowski_flat`]).
 
 use super::Facets;
 use super::error::CsgError;
+use super::flat::Flat;
 use super::geom::{Ctx, Geom};
 use super::hull::{convex_hull, convex_hull_2d};
 use super::hullable::Hullable;
 use super::hulled::hull_of;
+use super::minkowski_flat::minkowski_flat;
 use super::operand::{Operand, operands};
 use super::parser::{Stmt, Tree};
 use super::pieces;
@@ -49,8 +52,8 @@ fn sphere_operand(tree: &Tree, mut k: usize) -> Result<Option<(f64, DVec3)>, Csg
 /// convex sets is the hull of the sums of their vertices); of one operand made of convex pieces
 /// and convex others (under OpenSCAD's facets a sphere is one of those), the union of the
 /// pieces' sums; with a sphere operand and exact facets, or with one non-convex operand and a
-/// sphere otherwise, an offset of the other operand by the sphere's radius. Anything else is
-/// refused.
+/// sphere otherwise, an offset of the other operand by the sphere's radius; 2D operands not all
+/// convex by their polygons. Anything else is refused.
 pub(super) fn minkowski(
     tree: &Tree,
     kids: &[usize],
@@ -68,6 +71,17 @@ pub(super) fn minkowski(
         return Ok((g, Some(h)));
     }
     let all_convex = ops.iter().all(|(_, h, _)| h.convex);
+    if dim == 2 && !all_convex {
+        let flats: Vec<Flat> = ops
+            .into_iter()
+            .filter_map(|(g, _, _)| match g {
+                Geom::Flat(f) => Some(f),
+                _ => None,
+            })
+            .collect();
+        let sum = minkowski_flat(&flats, ctx.facets).map_err(|e| stmt.error(e))?;
+        return Ok((sum.map_or(Geom::Empty, Geom::Flat), None));
+    }
     // OpenSCAD's faceted sphere is a convex polyhedron like any other: where the non-convex
     // operand is made of convex pieces, the sum piece by piece is OpenSCAD's own result (its
     // `minkowski3-erosion` test), and the exact offset below is only the fallback.

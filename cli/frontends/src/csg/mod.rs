@@ -25,7 +25,9 @@
 //! or when another operand is not convex, it is that operand offset by the sphere's radius (exact
 //! where the operand's field is a true distance); one operand built from convex parts by unions,
 //! differences and intersections is cut into convex pieces (`pieces.rs`) and summed piece by piece
-//! with the convex others; two non-convex operands are refused.
+//! with the convex others; two non-convex 3D operands are refused. 2D operands of any shape are
+//! summed through their polygons (`minkowski_flat.rs`, by polygon clipping in `region.rs`), and
+//! `offset()` of any 2D region is OpenSCAD's Clipper offset (`offset.rs`, `offset_region.rs`).
 //! Extrusions are exact sweeps of the profile (`scale = 0` is a cone to the apex,
 //! `scale = [0, 1]` a wedge to a segment), except that under OpenSCAD's facets a twisted or
 //! unevenly scaled `linear_extrude` of up to four 2D leaves is OpenSCAD's stack of flat slices
@@ -66,12 +68,15 @@ mod hulled;
 mod import;
 mod lexer;
 mod minkowski;
+mod minkowski_flat;
 mod offset;
+mod offset_region;
 mod operand;
 mod parser;
 mod pieces;
 mod projection;
 mod projection_grid;
+mod region;
 mod resize;
 mod shadow;
 mod shape_args;
@@ -89,6 +94,8 @@ mod tests;
 mod tests_color;
 #[cfg(test)]
 mod tests_lenient;
+#[cfg(test)]
+mod tests_offset;
 #[cfg(test)]
 mod tests_projection;
 #[cfg(test)]

@@ -1,0 +1,250 @@
+//! A 2D region as explicit polygons: a [`Flat`] program evaluated by polygon clipping
+//! (`i_overlay`, exact integer arithmetic on a 64-bit grid fitted to the input), for the
+//! operations that need the region's boundary rather than its membership test (offsets that
+//! shrink or mitre, Minkowski sums of non-convex operands).
+//!
+//! A [`Shape`] is one connected region: its outline counter-clockwise first, then its holes
+//! clockwise. Discs become polygons: OpenSCAD's n-gons under `--facets openscad`, otherwise
+//! polygons whose sagitta is at most [`EXACT_SAGITTA`] of the radius.
+
+use super::Facets;
+use super::facets;
+use super::flat::{Flat, Leaf2, Op2};
+use glam::DVec2;
+use i_overlay::core::fill_rule::FillRule;
+use i_overlay::core::overlay_rule::OverlayRule;
+use i_overlay::float::simplify::SimplifyShape;
+use i_overlay::float::single::SingleFloatOverlay;
+
+/// One connected region: outline (counter-clockwise), then holes (clockwise).
+pub type Shape = Vec<Vec<DVec2>>;
+
+/// The largest sagitta, relative to the radius, of the polygon that stands for an exact disc.
+pub const EXACT_SAGITTA: f64 = 1e-5;
+
+/// The most sides of a polygon standing for an exact disc.
+const EXACT_SIDES: usize = 1024;
+
+/// The largest coordinate clipping takes (the clipper's own limit is 2⁵⁰⁰; beyond this bound a
+/// model's 2D part is refused rather than rounded away).
+pub const MAX_COORDINATE: f64 = 1e100;
+
+/// What clipping refuses: a coordinate that is not finite or beyond [`MAX_COORDINATE`].
+pub type RegionError = String;
+
+/// The number of sides of a disc whose faceted version (OpenSCAD's) has `openscad` sides.
+pub fn disc_sides(openscad: usize, how: Facets) -> usize {
+    match how {
+        Facets::OpenScad => openscad,
+        Facets::Exact => {
+            let n = (std::f64::consts::PI / (1.0 - EXACT_SAGITTA).acos()).ceil();
+            (n as usize).clamp(3, EXACT_SIDES)
+        }
+    }
+}
+
+/// A disc as a counter-clockwise polygon of `n` sides.
+pub fn disc(center: DVec2, r: f64, n: usize) -> Vec<DVec2> {
+    facets::circle(r, n)
+        .into_iter()
+        .map(|p| p + center)
+        .collect()
+}
+
+fn to_raw(l: &[DVec2]) -> Result<Vec<[f64; 2]>, RegionError> {
+    l.iter()
+        .map(|p| {
+            if p.abs().max_element() <= MAX_COORDINATE {
+                Ok([p.x, p.y])
+            } else {
+                Err(format!(
+                    "a 2D coordinate ({:e}, {:e}) is not finite or beyond ±{MAX_COORDINATE:e}, \
+                     which polygon clipping does not take",
+                    p.x, p.y
+                ))
+            }
+        })
+        .collect()
+}
+
+fn from_raw(shapes: Vec<Vec<Vec<[f64; 2]>>>) -> Vec<Shape> {
+    shapes
+        .into_iter()
+        .map(|s| {
+            s.into_iter()
+                .map(|c| c.into_iter().map(|[x, y]| DVec2::new(x, y)).collect())
+                .collect()
+        })
+        .collect()
+}
+
+fn raw_shapes(shapes: &[Shape]) -> Result<Vec<Vec<Vec<[f64; 2]>>>, RegionError> {
+    shapes
+        .iter()
+        .map(|s| s.iter().map(|c| to_raw(c)).collect())
+        .collect()
+}
+
+/// Twice the signed area of a loop.
+pub fn area2(l: &[DVec2]) -> f64 {
+    (0..l.len())
+        .map(|i| l[i].perp_dot(l[(i + 1) % l.len()]))
+        .sum()
+}
+
+/// The region of positive winding number of `loops` (a shape's own loops count +1 around its
+/// outline and −1 around its holes; add pieces counter-clockwise to unite them with it).
+pub fn positive(loops: Vec<Vec<DVec2>>) -> Result<Vec<Shape>, RegionError> {
+    let raw: Vec<Vec<[f64; 2]>> = loops
+        .iter()
+        .filter(|l| l.len() >= 3)
+        .map(|l| to_raw(l))
+        .collect::<Result<_, _>>()?;
+    if raw.is_empty() {
+        return Ok(Vec::new());
+    }
+    Ok(from_raw(raw.simplify_shape_as::<i64>(FillRule::Positive)))
+}
+
+/// The loop counter-clockwise.
+pub fn ccw(mut l: Vec<DVec2>) -> Vec<DVec2> {
+    if area2(&l) < 0.0 {
+        l.reverse();
+    }
+    l
+}
+
+/// A Boolean operation of two regions.
+pub fn boolean(a: &[Shape], b: &[Shape], rule: OverlayRule) -> Result<Vec<Shape>, RegionError> {
+    let (ra, rb) = (raw_shapes(a)?, raw_shapes(b)?);
+    if ra.is_empty() && rb.is_empty() {
+        return Ok(Vec::new());
+    }
+    Ok(from_raw(ra.overlay_as::<i64>(&rb, rule, FillRule::NonZero)))
+}
+
+/// The region of one leaf.
+fn leaf_shapes(leaf: &Leaf2, how: Facets) -> Result<Vec<Shape>, RegionError> {
+    match leaf {
+        Leaf2::Circle {
+            center,
+            radius,
+            res,
+        } => {
+            let n = disc_sides(facets::fragments(*radius, *res), how);
+            positive(vec![ccw(disc(*center, *radius, n))])
+        }
+        Leaf2::Polygon(loops) => {
+            let raw: Vec<Vec<[f64; 2]>> =
+                loops.iter().map(|l| to_raw(l)).collect::<Result<_, _>>()?;
+            Ok(from_raw(raw.simplify_shape_as::<i64>(FillRule::EvenOdd)))
+        }
+    }
+}
+
+/// The region a [`Flat`] program describes, as polygons.
+pub fn shapes(flat: &Flat, how: Facets) -> Result<Vec<Shape>, RegionError> {
+    flat.evaluate(
+        |leaf| Ok::<_, RegionError>(leaf_shapes(leaf, how)),
+        |op, parts| {
+            let mut parts = parts.into_iter();
+            let first = parts.next().unwrap_or(Ok(Vec::new()));
+            let rule = match op {
+                Op2::Union(_) => OverlayRule::Union,
+                Op2::Difference(_) => OverlayRule::Difference,
+                _ => OverlayRule::Intersect,
+            };
+            parts.fold(first, |acc, p| boolean(&acc?, &p?, rule))
+        },
+    )?
+}
+
+/// The shapes as a [`Flat`] (one polygon leaf per shape, united); `None` when there are none.
+pub fn to_flat(shapes: Vec<Shape>) -> Option<Flat> {
+    let parts: Vec<Flat> = shapes
+        .into_iter()
+        .filter(|s| !s.is_empty())
+        .map(|s| Flat::leaf(Leaf2::Polygon(s)))
+        .collect();
+    (!parts.is_empty()).then(|| Flat::combine(parts, Op2::Union))
+}
+
+/// The bounding box of the shapes' outlines (`None` when empty).
+pub fn bounds(shapes: &[Shape]) -> Option<(DVec2, DVec2)> {
+    let mut points = shapes.iter().filter_map(|s| s.first()).flatten().peekable();
+    points.peek()?;
+    Some(points.fold(
+        (DVec2::splat(f64::INFINITY), DVec2::splat(f64::NEG_INFINITY)),
+        |(lo, hi), p| (lo.min(*p), hi.max(*p)),
+    ))
+}
+
+/// The total area of the shapes (outlines minus holes).
+#[cfg(test)]
+pub fn area(shapes: &[Shape]) -> f64 {
+    shapes.iter().flatten().map(|l| area2(l)).sum::<f64>() / 2.0
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn square(lo: f64, hi: f64) -> Vec<DVec2> {
+        vec![
+            DVec2::new(lo, lo),
+            DVec2::new(hi, lo),
+            DVec2::new(hi, hi),
+            DVec2::new(lo, hi),
+        ]
+    }
+
+    #[test]
+    fn a_framed_square_is_one_shape_with_a_hole() {
+        let flat = Flat(vec![
+            Op2::Leaf(Leaf2::Polygon(vec![square(-10.0, 10.0)])),
+            Op2::Leaf(Leaf2::Polygon(vec![square(-5.0, 5.0)])),
+            Op2::Difference(2),
+        ]);
+        let s = shapes(&flat, Facets::Exact).unwrap();
+        assert_eq!(s.len(), 1);
+        assert_eq!(s[0].len(), 2);
+        assert!(area2(&s[0][0]) > 0.0 && area2(&s[0][1]) < 0.0);
+        assert!((area(&s) - 300.0).abs() < 1e-9);
+    }
+
+    #[test]
+    fn even_odd_loops_and_exact_discs() {
+        // Two loops of one polygon: the inner one is a hole by the even-odd rule.
+        let flat = Flat::leaf(Leaf2::Polygon(vec![square(0.0, 4.0), square(1.0, 2.0)]));
+        assert!((area(&shapes(&flat, Facets::Exact).unwrap()) - 15.0).abs() < 1e-9);
+        let disc = Flat::leaf(Leaf2::Circle {
+            center: DVec2::ZERO,
+            radius: 2.0,
+            res: facets::Resolution {
+                fn_: 0.0,
+                fa: 12.0,
+                fs: 2.0,
+            },
+        });
+        let a = area(&shapes(&disc, Facets::Exact).unwrap());
+        assert!((a - 4.0 * std::f64::consts::PI).abs() < 4.0 * std::f64::consts::PI * 2e-5);
+        let faceted = area(&shapes(&disc, Facets::OpenScad).unwrap());
+        assert!(faceted < a * 0.99, "OpenSCAD's default disc has few sides");
+    }
+
+    #[test]
+    fn intersections_and_unions() {
+        let flat = Flat(vec![
+            Op2::Leaf(Leaf2::Polygon(vec![square(0.0, 2.0)])),
+            Op2::Leaf(Leaf2::Polygon(vec![square(1.0, 3.0)])),
+            Op2::Intersection(2),
+            Op2::Leaf(Leaf2::Polygon(vec![square(5.0, 6.0)])),
+            Op2::Union(2),
+        ]);
+        let s = shapes(&flat, Facets::Exact).unwrap();
+        assert_eq!(s.len(), 2);
+        assert!((area(&s) - 2.0).abs() < 1e-9);
+        let back = to_flat(s).expect("two shapes");
+        assert_eq!(back.leaf_count(), 2);
+    }
+}
