@@ -122,11 +122,11 @@ pub fn convex_hull_within(points: &[DVec3], eps: f64) -> Option<(Vec<DVec3>, Vec
     }
     // Conflict lists: every point outside the hull waits on one face that sees it.
     let mut outside: Vec<Vec<usize>> = vec![Vec::new(); faces.len()];
-    for i in 0..points.len() {
+    for (i, &q) in points.iter().enumerate() {
         if [p0, p1, p2, p3].contains(&i) {
             continue;
         }
-        if let Some(f) = (0..faces.len()).find(|&f| faces[f].height(points[i]) > vis) {
+        if let Some(f) = (0..faces.len()).find(|&f| faces[f].height(q) > vis) {
             outside[f].push(i);
         }
     }
