@@ -128,14 +128,23 @@ pub(super) fn inside_out(points: &[DVec3], faces: &[Vec<u32>]) -> bool {
             let (key, d) = if a < b { ((a, b), 1) } else { ((b, a), -1) };
             *uses.entry(key).or_default() += d;
         }
-        let p = |k: usize| points.get(f[k] as usize).copied();
-        for k in 1..f.len().saturating_sub(1) {
-            if let (Some(a), Some(b), Some(c)) = (p(0), p(k), p(k + 1)) {
-                six += a.dot(b.cross(c));
-            }
-        }
+        six += fan_volume6(points, f).unwrap_or(0.0);
     }
     !faces.is_empty() && uses.values().all(|&d| d == 0) && six < 0.0
+}
+
+/// Six times the signed volume a face's fan (from its first corner) sweeps to the origin: summed
+/// over a closed polyhedron's faces, six times its volume. `None` when an index has no point.
+pub(super) fn fan_volume6(points: &[DVec3], f: &[u32]) -> Option<f64> {
+    let p = f
+        .iter()
+        .map(|&k| points.get(k as usize).copied())
+        .collect::<Option<Vec<DVec3>>>()?;
+    Some(
+        (1..p.len().saturating_sub(1))
+            .map(|k| p[0].dot(p[k].cross(p[k + 1])))
+            .sum(),
+    )
 }
 
 /// Whether no index repeats in `f`.

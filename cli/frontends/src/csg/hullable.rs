@@ -3,6 +3,7 @@
 //! pieces.
 
 use super::error::CsgError;
+use super::faces::fan_volume6;
 use super::facets;
 use super::flat::{Leaf2, Op2};
 use super::geom::Geom;
@@ -151,16 +152,10 @@ fn polyhedron_volume(stmt: &Stmt, points: &[DVec3]) -> Result<Option<f64>, CsgEr
     };
     let mut six = 0.0;
     for f in &faces {
-        let Some(p) = f
-            .iter()
-            .map(|&k| points.get(k as usize).copied())
-            .collect::<Option<Vec<DVec3>>>()
-        else {
+        let Some(v) = fan_volume6(points, f) else {
             return Ok(None);
         };
-        for k in 1..p.len().saturating_sub(1) {
-            six += p[0].dot(p[k].cross(p[k + 1]));
-        }
+        six += v;
     }
     Ok(Some(six.abs() / 6.0))
 }

@@ -163,8 +163,25 @@ pub fn shapes(flat: &Flat, how: Facets) -> Result<Vec<Shape>, RegionError> {
 pub fn to_flat(shapes: Vec<Shape>) -> Option<Flat> {
     let parts: Vec<Flat> = shapes
         .into_iter()
-        .filter(|s| !s.is_empty())
-        .map(|s| Flat::leaf(Leaf2::Polygon(s)))
+        .filter_map(|s| {
+            // Slivers the clipper's grid leaves (a hole of no area beside a glyph's offset): a
+            // kernel profile refuses loops of no area relative to their distance from the origin.
+            let mut loops = s.into_iter().map(|mut l| {
+                l.dedup();
+                while l.len() > 1 && l.first() == l.last() {
+                    l.pop();
+                }
+                l
+            });
+            let keep = |l: &Vec<DVec2>| {
+                let scale = l.iter().map(|c| c.length_squared()).fold(0.0, f64::max);
+                l.len() >= 3 && area2(l).abs() > 1e-12 * scale
+            };
+            let outline = loops.next().filter(keep)?;
+            let mut kept = vec![outline];
+            kept.extend(loops.filter(keep));
+            Some(Flat::leaf(Leaf2::Polygon(kept)))
+        })
         .collect();
     (!parts.is_empty()).then(|| Flat::combine(parts, Op2::Union))
 }
@@ -246,5 +263,29 @@ mod tests {
         assert!((area(&s) - 2.0).abs() < 1e-9);
         let back = to_flat(s).expect("two shapes");
         assert_eq!(back.leaf_count(), 2);
+    }
+
+    /// The clipper's grid can leave a hole of no area (Debian's `Advanced_GEB`: a glyph's round
+    /// offset); a kernel profile refuses it, so the region drops it.
+    #[test]
+    fn loops_of_no_area_are_dropped() {
+        let shape = vec![
+            square(0.0, 4.0),
+            vec![
+                DVec2::new(1.0, 1.0),
+                DVec2::new(2.0, 1.0),
+                DVec2::new(2.0, 1.0),
+                DVec2::new(3.0, 1.0),
+            ],
+        ];
+        let flat = to_flat(vec![
+            shape,
+            vec![vec![DVec2::ZERO, DVec2::X, DVec2::X * 2.0]],
+        ])
+        .expect("the square stays");
+        assert_eq!(
+            flat.0,
+            vec![Op2::Leaf(Leaf2::Polygon(vec![square(0.0, 4.0)]))]
+        );
     }
 }
