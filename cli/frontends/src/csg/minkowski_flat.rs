@@ -260,20 +260,13 @@ mod tests {
                 1,
             ),
         ];
-        let mut wrong = Vec::new();
-        for (name, flats, openscad, parts) in cases {
-            let shapes = minkowski_flat(&flats, Facets::OpenScad)
-                .unwrap()
-                .map(|f| region::shapes(&f, Facets::OpenScad).unwrap())
-                .unwrap_or_default();
-            let area = region::area(&shapes);
-            if (area - openscad).abs() > 1e-5 * openscad || shapes.len() != parts {
-                wrong.push(format!(
-                    "{name}: {area} in {} parts, OpenSCAD {openscad} in {parts}",
-                    shapes.len()
-                ));
-            }
-        }
+        let wrong: Vec<String> = cases
+            .into_iter()
+            .filter_map(|(name, flats, openscad, parts)| {
+                let sum = minkowski_flat(&flats, Facets::OpenScad).unwrap();
+                region::openscad_mismatch(sum, openscad, parts).map(|m| format!("{name}: {m}"))
+            })
+            .collect();
         assert!(wrong.is_empty(), "{wrong:#?}");
     }
 }

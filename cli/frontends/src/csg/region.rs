@@ -202,6 +202,22 @@ pub fn area(shapes: &[Shape]) -> f64 {
     shapes.iter().flatten().map(|l| area2(l)).sum::<f64>() / 2.0
 }
 
+/// How a 2D result differs from OpenSCAD's render (`None` when its area is within 10⁻⁵ of
+/// `openscad` in `parts` shapes): the tests' comparison with areas measured on OpenSCAD 2021.01.
+#[cfg(test)]
+pub fn openscad_mismatch(result: Option<Flat>, openscad: f64, parts: usize) -> Option<String> {
+    let shapes = result
+        .map(|f| shapes(&f, Facets::OpenScad).expect("clipped"))
+        .unwrap_or_default();
+    let a = area(&shapes);
+    ((a - openscad).abs() > 1e-5 * openscad || shapes.len() != parts).then(|| {
+        format!(
+            "area {a} in {} parts, OpenSCAD {openscad} in {parts}",
+            shapes.len()
+        )
+    })
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

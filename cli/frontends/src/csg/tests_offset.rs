@@ -190,20 +190,13 @@ fn offsets_agree_with_openscads_renders() {
             1,
         ),
     ];
-    let mut wrong = Vec::new();
-    for (name, flat, how, openscad, parts) in cases {
-        let shapes = offset(flat, how, Facets::OpenScad)
-            .unwrap()
-            .map(|f| region::shapes(&f, Facets::OpenScad).unwrap())
-            .unwrap_or_default();
-        let area = region::area(&shapes);
-        if (area - openscad).abs() > 1e-5 * openscad || shapes.len() != parts {
-            wrong.push(format!(
-                "{name}: area {area} in {} parts, OpenSCAD {openscad} in {parts}",
-                shapes.len()
-            ));
-        }
-    }
+    let wrong: Vec<String> = cases
+        .into_iter()
+        .filter_map(|(name, flat, how, openscad, parts)| {
+            let result = offset(flat, how, Facets::OpenScad).unwrap();
+            region::openscad_mismatch(result, openscad, parts).map(|m| format!("{name}: {m}"))
+        })
+        .collect();
     assert!(wrong.is_empty(), "{wrong:#?}");
 }
 
