@@ -10,6 +10,7 @@ use anyhow::Result;
 use solidkit_frontends::csg::Facets;
 use solidkit_frontends::load::{LoadOptions, load_path};
 use solidkit_kernel::Solid;
+use solidkit_meshing::polyhedral::Polyhedral;
 use std::path::{Path, PathBuf};
 use std::sync::Arc;
 
@@ -29,11 +30,26 @@ pub fn load_solid_warned(
     allow: &[PathBuf],
     defines: &[String],
 ) -> Result<(Solid, Vec<String>)> {
+    load_solid_polyhedral(path, facets, allow, defines, false).map(|(s, w, _)| (s, w))
+}
+
+/// The model's polyhedron (when asked for), or why it has none.
+pub type MaybePolyhedron = Option<Result<Polyhedral, String>>;
+
+/// [`load_solid_warned`], and with `polyhedral` the model's polyhedron or why it has none.
+pub fn load_solid_polyhedral(
+    path: &Path,
+    facets: Facets,
+    allow: &[PathBuf],
+    defines: &[String],
+    polyhedral: bool,
+) -> Result<(Solid, Vec<String>, MaybePolyhedron)> {
     let mut options = LoadOptions::default();
+    options.polyhedral = polyhedral;
     options.facets = facets;
     options.allow = allow.to_vec();
     options.defines = defines.to_vec();
     options.script.print = Some(Arc::new(|line: &str| errln!("{}", one_line(line))));
     let loaded = load_path(path, &options)?;
-    Ok((loaded.solid, loaded.warnings))
+    Ok((loaded.solid, loaded.warnings, loaded.polyhedron))
 }

@@ -50,6 +50,7 @@ pub mod marching_cubes;
 pub mod measure;
 pub mod octree;
 pub mod pipeline;
+pub mod polyhedral;
 pub mod refine;
 pub mod render;
 pub mod repair;

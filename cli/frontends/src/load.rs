@@ -15,6 +15,7 @@ use crate::rhai::{self, ScriptError, ScriptOptions};
 use solidkit_kernel::files::{DEFAULT_MAX_FILE_BYTES, FileAccess, FileError, read_regular_file};
 use solidkit_kernel::{KernelError, Solid, json};
 use solidkit_meshing::io::FileMeshResolver;
+use solidkit_meshing::polyhedral::{Polyhedral, from_solid};
 use std::path::{Path, PathBuf};
 use std::sync::Arc;
 
@@ -80,6 +81,10 @@ pub struct LoadOptions {
     /// constants in the scope of `.rhai` scripts (the value a Rhai literal, see
     /// [`crate::rhai::ScriptOptions::defines`]); an error for `.json` and `.csg` inputs.
     pub defines: Vec<String>,
+    /// Also build the model's polyhedron by mesh Booleans ([`Loaded::polyhedron`]): for `.csg`
+    /// and `.scad` files from OpenSCAD's faceted parts (the solid is then built with
+    /// [`Facets::OpenScad`] too), for trees and scripts where every leaf is a polyhedron.
+    pub polyhedral: bool,
 }
 
 impl Default for LoadOptions {
@@ -91,6 +96,7 @@ impl Default for LoadOptions {
             max_file_bytes: DEFAULT_MAX_FILE_BYTES,
             script: ScriptOptions::default(),
             defines: Vec::new(),
+            polyhedral: false,
         }
     }
 }
@@ -104,6 +110,9 @@ pub struct Loaded {
     /// The front end's warnings, one line each as `FILE:LINE:COLUMN: problem` (parts of a `.csg`
     /// model skipped the way OpenSCAD skips them).
     pub warnings: Vec<String>,
+    /// With [`LoadOptions::polyhedral`]: the model's polyhedron, or why it has none
+    /// (`FILE:LINE:COLUMN: ...` for `.csg` statements).
+    pub polyhedron: Option<Result<Polyhedral, String>>,
 }
 
 /// Why a solid could not be loaded. Each message is complete on its own and names the file
@@ -274,6 +283,7 @@ fn load_text(
 ) -> Result<Loaded, LoadError> {
     let resolver = FileMeshResolver::with_access(access);
     let mut warnings = Vec::new();
+    let mut polyhedron = None;
     if !options.defines.is_empty() && matches!(format, Format::Json | Format::Csg) {
         return Err(LoadError::Defines {
             name: name.to_string(),
@@ -290,6 +300,15 @@ fn load_text(
             script.defines = options.defines.clone();
             rhai::eval_with_options(text, name, Arc::new(resolver), &script)
                 .map_err(LoadError::Script)?
+        }
+        Format::Csg if options.polyhedral => {
+            let got = csg::import_polyhedral(text, &resolver).map_err(|error| LoadError::Csg {
+                name: name.to_string(),
+                error,
+            })?;
+            warnings.extend(got.warnings.iter().map(|w| format!("{name}:{w}")));
+            polyhedron = Some(got.polyhedron.map_err(|e| format!("{name}:{e}")));
+            got.solid
         }
         Format::Csg => {
             let (solid, w) =
@@ -311,7 +330,14 @@ fn load_text(
         name: name.to_string(),
         error,
     })?;
-    Ok(Loaded { solid, warnings })
+    if options.polyhedral && polyhedron.is_none() {
+        polyhedron = Some(from_solid(&solid).map_err(|e| format!("{name}: {e}")));
+    }
+    Ok(Loaded {
+        solid,
+        warnings,
+        polyhedron,
+    })
 }
 
 #[cfg(test)]

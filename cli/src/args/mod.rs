@@ -212,6 +212,17 @@ impl Method {
     }
 }
 
+/// How `solidkit mesh` makes the mesh: a polygonization method, or polyhedral Booleans.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum MeshMethod {
+    /// Marching cubes.
+    Mc,
+    /// Manifold dual contouring (sharp features kept; `--tolerance` simplifies).
+    Dc,
+    /// Mesh Booleans of the model's polyhedra (no grid).
+    Polyhedral,
+}
+
 /// Arguments of `solidkit mesh`.
 #[derive(Debug, clap::Args)]
 pub struct MeshArgs {
@@ -223,9 +234,13 @@ pub struct MeshArgs {
     /// Cells along the longest side of the meshing bounds (1 to 2048).
     #[arg(short, long, default_value_t = 128, value_parser = parse_resolution)]
     pub resolution: usize,
-    /// Polygonization method (default: mc; dc with --target-error).
+    /// Polygonization method (default: mc; dc with --target-error). `polyhedral`: no grid,
+    /// mesh Booleans of the model's polyhedra (OpenSCAD's faceted parts of a .csg/.scad model,
+    /// implying --facets openscad; trees of polyhedra, boxes, transforms and Booleans), as
+    /// OpenSCAD and manifold3d build them; a model with a part that is not a polyhedron is
+    /// meshed by marching cubes instead, with a warning naming that part.
     #[arg(long, value_enum)]
-    pub method: Option<Method>,
+    pub method: Option<MeshMethod>,
     /// Dual contouring only: collapse octree cells whose merged vertex stays within this
     /// distance (model units) of the surface planes it replaces, where the topology allows.
     #[arg(long, value_parser = parse_tolerance, allow_hyphen_values = true)]

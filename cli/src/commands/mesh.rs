@@ -1,6 +1,6 @@
 //! `solidkit mesh`: tree → field → marching cubes → report (and mesh file).
 
-use crate::args::MeshArgs;
+use crate::args::{MeshArgs, MeshMethod};
 use crate::output::{out, outln};
 use crate::progress::MeshProgress;
 use crate::{input, report};
@@ -21,8 +21,26 @@ use std::time::Instant;
 /// it is inside somewhere.
 pub fn run(a: &MeshArgs) -> Result<u8> {
     let input = a.input.display();
-    let (solid, mut warnings) =
-        input::load_solid_warned(&a.input, a.facets.into(), &a.allow_path, &a.define)?;
+    let polyhedral = a.method == Some(MeshMethod::Polyhedral);
+    if polyhedral {
+        super::mesh_polyhedral::refuse_grid_options(a)?;
+    }
+    let start = Instant::now();
+    let (solid, mut warnings, polyhedron) = input::load_solid_polyhedral(
+        &a.input,
+        a.facets.into(),
+        &a.allow_path,
+        &a.define,
+        polyhedral,
+    )?;
+    match polyhedron {
+        Some(Ok(p)) => return super::mesh_polyhedral::finish(a, &solid, &p, warnings, start),
+        Some(Err(why)) => {
+            let w = format!("{why}: meshed by marching cubes instead");
+            warnings.push(w);
+        }
+        None => {}
+    }
     let domain = match a.bounds {
         Some(b) => Domain::Clip(Aabb::new(
             DVec3::new(b[0], b[1], b[2]),
@@ -31,10 +49,10 @@ pub fn run(a: &MeshArgs) -> Result<u8> {
         None => Domain::Solid,
     };
     let progress = MeshProgress::new(!a.no_progress);
-    let method = a.method.unwrap_or(match a.target_error {
-        Some(_) => crate::args::Method::Dc,
-        None => crate::args::Method::Mc,
-    });
+    let method = match (a.method, a.target_error) {
+        (Some(MeshMethod::Dc), _) | (None, Some(_)) => crate::args::Method::Dc,
+        _ => crate::args::Method::Mc,
+    };
     let (resolution, simplify) = match a.target_error {
         Some(e) => (a.resolution, Some(e)),
         None => (a.resolution, a.simplify),
@@ -175,7 +193,10 @@ pub fn run(a: &MeshArgs) -> Result<u8> {
 }
 
 /// `--preview`: the mesh written, rasterised (iso view, 1024 x 1024).
-fn write_preview(mesh: &solidkit_meshing::IndexedMesh, path: &std::path::Path) -> Result<()> {
+pub(super) fn write_preview(
+    mesh: &solidkit_meshing::IndexedMesh,
+    path: &std::path::Path,
+) -> Result<()> {
     use solidkit_meshing::render::{Camera, ImageSize, View, png_out, raster, shade};
     let frame = super::render::mesh_box(&mesh.positions);
     let size = ImageSize::new(1024, 1024)?;

@@ -9,6 +9,7 @@ mod curve;
 mod gallery;
 mod r#gen;
 mod mesh;
+mod mesh_polyhedral;
 mod render;
 mod repair;
 mod subdivide;

@@ -12,6 +12,7 @@ use super::import::{Imported, import, string_arg};
 use super::minkowski::minkowski;
 use super::offset::{Offset, offset};
 use super::parser::{Stmt, Tree, Value};
+use super::polyhedral::{self, Track};
 use super::projection::projection;
 use super::resize::resize;
 use super::shape_args::{cylinder, faceted_solid, is_identity, matrix, polyhedron, radius};
@@ -33,6 +34,17 @@ pub fn convert(
     facets: Facets,
     files: &dyn MeshResolver,
 ) -> Result<(Solid, Vec<Warning>), CsgError> {
+    convert_with(tree, facets, files, false).map(|(s, w, _)| (s, w))
+}
+
+/// [`convert`], and with `polyhedral` also the model's polyhedron (`polyhedral.rs`) or the
+/// first statement that has none.
+pub fn convert_with(
+    tree: &Tree,
+    facets: Facets,
+    files: &dyn MeshResolver,
+    polyhedral: bool,
+) -> Result<(Solid, Vec<Warning>, Option<Track>), CsgError> {
     let mut ctx = Ctx {
         facets,
         files,
@@ -59,6 +71,7 @@ pub fn convert(
     let roots: Vec<usize> = roots.into_iter().filter(kept).collect();
     let mut results: Vec<Option<Geom>> = vec![None; tree.nodes.len()];
     let mut hullable: Vec<Option<Hullable>> = vec![None; tree.nodes.len()];
+    let mut polys: Vec<Option<Track>> = vec![None; tree.nodes.len()];
     // (statement, children done, under a hull or minkowski).
     let mut work: Vec<(usize, bool, bool)> =
         roots.iter().rev().map(|&r| (r, false, false)).collect();
@@ -75,7 +88,32 @@ pub fn convert(
             .iter()
             .map(|&c| results[c].take().expect("child converted"))
             .collect();
-        let infos: Vec<Option<Hullable>> = kids.iter().map(|&c| hullable[c].take()).collect();
+        let mut infos: Vec<Option<Hullable>> = kids.iter().map(|&c| hullable[c].take()).collect();
+        let kid_polys: Vec<Option<Track>> = if polyhedral {
+            kids.iter().map(|&c| polys[c].take()).collect()
+        } else {
+            Vec::new()
+        };
+        let (dims, flat) = if polyhedral {
+            (polyhedral::dims(&children), polyhedral::flat_of(&children))
+        } else {
+            (Vec::new(), None)
+        };
+        if polyhedral && stmt.name == "hull" {
+            // An operand known only from its geometry: its polyhedron's vertices are exact
+            // where a fine mesh's would not be.
+            for (info, poly) in infos.iter_mut().zip(&kid_polys) {
+                if info.is_none()
+                    && let Some(Ok(p)) = poly
+                {
+                    *info = Some(Hullable {
+                        points: p.to_mesh().positions,
+                        convex: false,
+                        pieces: None,
+                    });
+                }
+            }
+        }
         let (geom, info) = match stmt.name.as_str() {
             "hull" => hull(stmt, children, infos, &mut ctx)?,
             "minkowski" => minkowski(tree, &kids, stmt, children, infos, &mut ctx)?,
@@ -90,6 +128,10 @@ pub fn convert(
                 (geom, info)
             }
         };
+        if polyhedral {
+            polys[i] =
+                polyhedral::track(stmt, &dims, kid_polys, flat.as_ref(), &geom, info.as_ref());
+        }
         results[i] = Some(geom);
         if hulled {
             hullable[i] = info;
@@ -99,6 +141,11 @@ pub fn convert(
         .iter()
         .map(|&r| results[r].take().expect("root converted"))
         .collect();
+    let track = polyhedral.then(|| {
+        let root_dims = polyhedral::dims(&top);
+        let parts: Vec<Option<Track>> = roots.iter().map(|&r| polys[r].take()).collect();
+        polyhedral::union_track(&root_dims, parts)
+    });
     let root = Stmt {
         name: "group".into(),
         ..Stmt::default()
@@ -108,7 +155,7 @@ pub fn convert(
         Geom::Empty => return Err(CsgError::Empty),
         Geom::Flat(_) => return Err(CsgError::Flat),
     };
-    Ok((solid, ctx.warnings))
+    Ok((solid, ctx.warnings, track))
 }
 
 /// The non-empty children combined: solids by union / `difference` / intersection, 2D regions

@@ -88,9 +88,9 @@ pub(super) fn minkowski(
     if ctx.facets == Facets::OpenScad
         && dim == 3
         && !all_convex
-        && let Some(g) = minkowski_by_pieces(stmt, &ops)?
+        && let Some(done) = minkowski_by_pieces(stmt, &ops)?
     {
-        return Ok((g, None));
+        return Ok(done);
     }
     let mut spheres = Vec::new();
     if dim == 3 && (ctx.facets == Facets::Exact || !all_convex) {
@@ -103,9 +103,9 @@ pub(super) fn minkowski(
     if spheres.is_empty() || spheres.len() == ops.len() {
         if !all_convex
             && dim == 3
-            && let Some(g) = minkowski_by_pieces(stmt, &ops)?
+            && let Some(done) = minkowski_by_pieces(stmt, &ops)?
         {
-            return Ok((g, None));
+            return Ok(done);
         }
         if !all_convex {
             return Err(stmt.error(
@@ -154,8 +154,12 @@ pub(super) fn minkowski(
 }
 
 /// `minkowski()` of one operand made of convex pieces ([`super::pieces`]) and convex others: the
-/// union of the hulls of each piece plus the others' sum; `None` when an operand is neither.
-fn minkowski_by_pieces(stmt: &Stmt, ops: &[Operand]) -> Result<Option<Geom>, CsgError> {
+/// union of the hulls of each piece plus the others' sum (and those hulls' vertices as its
+/// convex pieces); `None` when an operand is neither.
+fn minkowski_by_pieces(
+    stmt: &Stmt,
+    ops: &[Operand],
+) -> Result<Option<(Geom, Option<Hullable>)>, CsgError> {
     let (rest, convex): (Vec<&Operand>, Vec<&Operand>) =
         ops.iter().partition(|(_, h, _)| !h.convex);
     let [(_, decomposed, _)] = rest[..] else {
@@ -166,16 +170,22 @@ fn minkowski_by_pieces(stmt: &Stmt, ops: &[Operand]) -> Result<Option<Geom>, Csg
     };
     let b = minkowski_points(3, convex.iter().map(|(_, h, _)| h.points.clone()));
     let mut solids = Vec::new();
+    let mut hulls = Vec::new();
     for sum in pieces::sum_with_convex(parts, &b) {
-        if let (Geom::Solid(s), _) = hull_of(stmt, 3, &sum)? {
+        if let (Geom::Solid(s), Some(h)) = hull_of(stmt, 3, &sum)? {
             solids.push(s);
+            hulls.push(h.points);
         }
     }
-    Ok(Some(if solids.is_empty() {
-        Geom::Empty
-    } else {
-        Geom::Solid(Solid::union_all(solids))
-    }))
+    if solids.is_empty() {
+        return Ok(Some((Geom::Empty, None)));
+    }
+    let info = Hullable {
+        points: hulls.iter().flatten().copied().collect(),
+        convex: false,
+        pieces: Some(hulls),
+    };
+    Ok(Some((Geom::Solid(Solid::union_all(solids)), Some(info))))
 }
 
 /// The vertices of the Minkowski sum of the convex hulls of `sets` (reduced to hull vertices

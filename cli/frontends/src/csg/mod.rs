@@ -74,6 +74,7 @@ mod offset_region;
 mod operand;
 mod parser;
 mod pieces;
+mod polyhedral;
 mod projection;
 mod projection_grid;
 mod region;
@@ -108,6 +109,7 @@ mod tests_surface_png;
 mod tests_text;
 
 pub use error::{CsgError, Pos, Warning};
+pub use polyhedral::NotPolyhedral;
 
 use solidkit_kernel::Solid;
 use solidkit_kernel::primitive::MeshResolver;
@@ -140,4 +142,30 @@ pub fn import_with_warnings(
 ) -> Result<(Solid, Vec<Warning>), CsgError> {
     let tree = parser::parse(text)?;
     convert::convert(&tree, facets, files)
+}
+
+/// A model imported for `--method polyhedral`: the field solid (built with OpenSCAD's facets,
+/// the fallback), the warnings, and the model's polyhedron built by mesh Booleans of OpenSCAD's
+/// faceted parts, or the first statement that has no polyhedral form.
+pub struct PolyhedralImport {
+    /// The solid, as [`import_with_warnings`] with [`Facets::OpenScad`] gives it.
+    pub solid: Solid,
+    /// Parts skipped as OpenSCAD skips them.
+    pub warnings: Vec<Warning>,
+    /// The polyhedron, or why there is none.
+    pub polyhedron: Result<solidkit_meshing::polyhedral::Polyhedral, NotPolyhedral>,
+}
+
+/// Imports `.csg` text with its polyhedron (see [`PolyhedralImport`]).
+pub fn import_polyhedral(
+    text: &str,
+    files: &dyn MeshResolver,
+) -> Result<PolyhedralImport, CsgError> {
+    let tree = parser::parse(text)?;
+    let (solid, warnings, track) = convert::convert_with(&tree, Facets::OpenScad, files, true)?;
+    Ok(PolyhedralImport {
+        solid,
+        warnings,
+        polyhedron: track.expect("asked for"),
+    })
 }

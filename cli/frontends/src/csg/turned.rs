@@ -82,6 +82,67 @@ pub(super) fn stepped_turn(
     Some((vertices, faces))
 }
 
+/// A closed mesh of the even-odd region of `loops` (at x ≥ 0, y up) turned a full turn about z
+/// in `steps` straight steps, the first copy at `start` degrees from +x (OpenSCAD's faceted
+/// full `rotate_extrude`, whose first stop is on the -x axis); corners on the axis are one
+/// vertex. `None` for fewer than 3 steps, a profile off the triangulator or a mesh larger than
+/// [`MAX_TURN_CORNERS`].
+pub(super) fn full_turn(
+    loops: &[Vec<DVec2>],
+    steps: usize,
+    start: f64,
+) -> Option<(Vec<DVec3>, Vec<Vec<u32>>)> {
+    let loops: Vec<Vec<DVec2>> = oriented(loops).into_iter().map(|(l, _)| l).collect();
+    triangulate(&loops).ok()?;
+    let corners: Vec<DVec2> = loops.iter().flatten().copied().collect();
+    let n = corners.len();
+    if steps < 3 || n.checked_mul(steps)? > MAX_TURN_CORNERS {
+        return None;
+    }
+    let mut vertices = Vec::new();
+    let mut index = vec![vec![0u32; n]; steps];
+    for (c, p) in corners.iter().enumerate() {
+        if p.x <= 0.0 {
+            let k = vertices.len() as u32;
+            vertices.push(DVec3::new(0.0, 0.0, p.y));
+            index.iter_mut().for_each(|row| row[c] = k);
+        }
+    }
+    for (j, row) in index.iter_mut().enumerate() {
+        let (sin, cos) = (start + 360.0 * j as f64 / steps as f64)
+            .to_radians()
+            .sin_cos();
+        for (c, p) in corners.iter().enumerate() {
+            if p.x > 0.0 {
+                row[c] = vertices.len() as u32;
+                vertices.push(DVec3::new(p.x * cos, p.x * sin, p.y));
+            }
+        }
+    }
+    let mut faces: Vec<Vec<u32>> = Vec::new();
+    let mut first = 0;
+    for l in &loops {
+        for i in 0..l.len() {
+            let (a, b) = (first + i, first + (i + 1) % l.len());
+            for j in 0..steps {
+                let k = (j + 1) % steps;
+                let quad = [index[j][a], index[k][a], index[k][b], index[j][b]];
+                let mut face: Vec<u32> = Vec::with_capacity(4);
+                for v in quad {
+                    if face.last() != Some(&v) && face.first() != Some(&v) {
+                        face.push(v);
+                    }
+                }
+                if face.len() >= 3 {
+                    faces.push(face);
+                }
+            }
+        }
+        first += l.len();
+    }
+    Some((vertices, faces))
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

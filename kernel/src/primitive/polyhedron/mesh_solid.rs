@@ -210,6 +210,29 @@ impl MeshSolid {
         self.source.name()
     }
 
+    /// The distinct triangles as an indexed mesh, corners at equal positions shared (bit for
+    /// bit): the polyhedron itself, for polyhedral Booleans.
+    pub fn to_indexed(&self) -> IndexedMesh {
+        let mut index: std::collections::HashMap<[u64; 3], u32> = std::collections::HashMap::new();
+        let mut positions = Vec::new();
+        let triangles = self
+            .tree
+            .triangles()
+            .iter()
+            .map(|t| {
+                t.map(|p| {
+                    *index
+                        .entry(p.to_array().map(f64::to_bits))
+                        .or_insert_with(|| {
+                            positions.push(p);
+                            (positions.len() - 1) as u32
+                        })
+                })
+            })
+            .collect();
+        IndexedMesh::new(positions, triangles)
+    }
+
     /// Number of triangles.
     pub fn triangle_count(&self) -> usize {
         self.tree.count

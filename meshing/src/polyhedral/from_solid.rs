@@ -1,0 +1,80 @@
+//! A solid tree as a [`Polyhedral`] solid, where every leaf is a polyhedron (a box, a mesh
+//! solid: `polyhedron`, `mesh`, `prism`, `dual`, `subdivide`) under affine transforms, Booleans
+//! and colours. Post-order over an explicit stack: any depth is safe.
+
+use super::{Polyhedral, PolyhedralError, difference, intersection_all, union_all};
+use glam::DVec3;
+use solidkit_kernel::NodeKind;
+use solidkit_kernel::Solid;
+use solidkit_kernel::primitive::Primitive;
+
+/// Why a tree has no polyhedral form: the first node that is not a polyhedron (by its JSON
+/// name), or the Boolean that failed.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum NotPolyhedral {
+    /// A node whose surface is not made of flat faces (a sphere, a blend, a blob, an offset).
+    #[error("`{0}` is not a polyhedron")]
+    Node(String),
+    /// A polyhedral leaf or Boolean failed.
+    #[error(transparent)]
+    Failed(#[from] PolyhedralError),
+}
+
+/// The box of size `size` centred at the origin.
+fn cuboid(size: DVec3) -> Result<Polyhedral, PolyhedralError> {
+    let h = size / 2.0;
+    let v: Vec<DVec3> = (0..8)
+        .map(|i| {
+            let s = DVec3::new((i & 1) as f64, ((i >> 1) & 1) as f64, (i >> 2) as f64);
+            (s * 2.0 - 1.0) * h
+        })
+        .collect();
+    let f = vec![
+        vec![0, 2, 3, 1],
+        vec![4, 5, 7, 6],
+        vec![0, 1, 5, 4],
+        vec![2, 6, 7, 3],
+        vec![0, 4, 6, 2],
+        vec![1, 3, 7, 5],
+    ];
+    Polyhedral::from_faces(v, f)
+}
+
+/// The leaf's polyhedron, or why it has none.
+fn leaf(p: &Primitive) -> Result<Polyhedral, NotPolyhedral> {
+    match p {
+        Primitive::Cuboid(c) => Ok(cuboid(c.size)?),
+        Primitive::Mesh(m) => Ok(Polyhedral::from_mesh(&m.to_indexed())?),
+        other => Err(NotPolyhedral::Node(other.name().to_string())),
+    }
+}
+
+/// The tree as one polyhedral solid, or the first node that has no polyhedral form.
+pub fn from_solid(solid: &Solid) -> Result<Polyhedral, NotPolyhedral> {
+    // (node, children done); results stack up in post-order.
+    let mut work: Vec<(&Solid, bool)> = vec![(solid, false)];
+    let mut done: Vec<Polyhedral> = Vec::new();
+    while let Some((s, expanded)) = work.pop() {
+        let kids = s.children();
+        if !expanded {
+            work.push((s, true));
+            work.extend(kids.iter().rev().map(|c| (c, false)));
+            continue;
+        }
+        let parts = done.split_off(done.len() - kids.len());
+        let p = match s.kind() {
+            NodeKind::Primitive(p) => leaf(p)?,
+            NodeKind::Union | NodeKind::Color(_) => union_all(parts)?,
+            NodeKind::Intersection => intersection_all(parts)?,
+            NodeKind::Difference => {
+                let mut parts = parts.into_iter();
+                let base = parts.next().unwrap_or_else(Polyhedral::empty);
+                difference(base, parts.collect())?
+            }
+            NodeKind::Transform(t) => union_all(parts)?.transform(&t.forward),
+            other => return Err(NotPolyhedral::Node(other.name().to_string())),
+        };
+        done.push(p);
+    }
+    Ok(done.pop().unwrap_or_else(Polyhedral::empty))
+}

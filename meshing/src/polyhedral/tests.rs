@@ -1,0 +1,127 @@
+//! Polyhedral Booleans against exact volumes and topology counts, with coincident faces, shared
+//! edges and mirrors.
+
+use super::*;
+use crate::{ReportOptions, TopologyReport};
+
+/// The box `[lo, lo + size]` as 6 quads, counter-clockwise seen from outside.
+fn cuboid(lo: DVec3, size: DVec3) -> Polyhedral {
+    let v: Vec<DVec3> = (0..8)
+        .map(|i| lo + size * DVec3::new((i & 1) as f64, ((i >> 1) & 1) as f64, (i >> 2) as f64))
+        .collect();
+    let f = vec![
+        vec![0, 2, 3, 1],
+        vec![4, 5, 7, 6],
+        vec![0, 1, 5, 4],
+        vec![2, 6, 7, 3],
+        vec![0, 4, 6, 2],
+        vec![1, 3, 7, 5],
+    ];
+    Polyhedral::from_faces(v, f).expect("a box")
+}
+
+fn report(p: &Polyhedral) -> TopologyReport {
+    TopologyReport::with_options(
+        &p.to_mesh(),
+        &ReportOptions {
+            self_intersections: true,
+        },
+    )
+}
+
+fn assert_solid(r: &TopologyReport, shells: usize, genus: i64, volume: f64) {
+    assert!(r.closed && r.manifold && r.oriented, "{r:?}");
+    assert_eq!(r.self_intersections, Some(0));
+    assert_eq!((r.shells, r.genus), (shells, Some(genus)), "{r:?}");
+    assert!(
+        (r.volume - volume).abs() < 1e-9 * volume.max(1.0),
+        "{} {volume}",
+        r.volume
+    );
+}
+
+#[test]
+fn a_box_is_twelve_triangles() {
+    let b = cuboid(DVec3::ZERO, DVec3::new(1.0, 2.0, 3.0));
+    assert_eq!(b.triangle_count(), 12);
+    assert_solid(&report(&b), 1, 0, 6.0);
+}
+
+#[test]
+fn faces_shared_inside_a_union_join_the_solid() {
+    // A 3 x 3 x 1 slab of unit cubes, every neighbour sharing a whole face.
+    let cubes: Vec<Polyhedral> = (0..9)
+        .map(|k| cuboid(DVec3::new((k % 3) as f64, (k / 3) as f64, 0.0), DVec3::ONE))
+        .collect();
+    let u = union_all(cubes).unwrap();
+    assert_solid(&report(&u), 1, 0, 9.0);
+    // Merged coplanar faces: the slab is a box again, up to the triangulation of its faces.
+    assert!(u.triangle_count() <= 9 * 12, "{}", u.triangle_count());
+}
+
+#[test]
+fn a_ring_of_cubes_has_a_hole_and_edge_contact_stays_apart() {
+    let ring: Vec<Polyhedral> = (0..9)
+        .filter(|&k| k != 4)
+        .map(|k| cuboid(DVec3::new((k % 3) as f64, (k / 3) as f64, 0.0), DVec3::ONE))
+        .collect();
+    assert_solid(&report(&union_all(ring).unwrap()), 1, 1, 8.0);
+    // Two boxes sharing only an edge: two solids, as exact kernels keep them.
+    let a = cuboid(DVec3::ZERO, DVec3::ONE);
+    let b = cuboid(DVec3::new(1.0, 1.0, 0.0), DVec3::ONE);
+    let u = union_all(vec![a, b]).unwrap();
+    assert_eq!(u.volume(), 2.0);
+    assert_eq!(report(&u).shells, 2);
+}
+
+#[test]
+fn difference_and_intersection_with_coincident_faces() {
+    let a = cuboid(DVec3::ZERO, DVec3::splat(2.0));
+    // A through-slot flush with the top face and the sides: coincident faces everywhere.
+    let slot = cuboid(DVec3::new(0.5, 0.0, 1.0), DVec3::new(1.0, 2.0, 1.0));
+    let d = difference(a.clone(), vec![slot.clone()]).unwrap();
+    assert_solid(&report(&d), 1, 0, 6.0);
+    let i = intersection_all(vec![a.clone(), slot]).unwrap();
+    assert_solid(&report(&i), 1, 0, 2.0);
+    // Disjoint operands: empty intersection, and an empty operand leaves a difference alone.
+    let far = cuboid(DVec3::splat(5.0), DVec3::ONE);
+    assert!(intersection_all(vec![a.clone(), far]).unwrap().is_empty());
+    let same = difference(a, vec![Polyhedral::empty()]).unwrap();
+    assert_eq!(same.volume(), 8.0);
+}
+
+#[test]
+fn a_mirror_keeps_the_faces_outward() {
+    let b = cuboid(DVec3::ZERO, DVec3::new(1.0, 2.0, 3.0));
+    let m = b.transform(&glam::DAffine3::from_scale(DVec3::new(-1.0, 1.0, 1.0)));
+    let r = report(&m);
+    assert_solid(&r, 1, 0, 6.0);
+    assert_eq!(r.bbox[0][0], -1.0);
+}
+
+#[test]
+fn hull_of_points() {
+    let pts: Vec<DVec3> = (0..8)
+        .map(|i| DVec3::new((i & 1) as f64, ((i >> 1) & 1) as f64, (i >> 2) as f64))
+        .chain([DVec3::splat(0.5)])
+        .collect();
+    let h = Polyhedral::hull(&pts).unwrap();
+    assert_solid(&report(&h), 1, 0, 1.0);
+}
+
+#[test]
+fn open_or_bad_meshes_are_refused() {
+    let v = vec![DVec3::ZERO, DVec3::X, DVec3::Y, DVec3::Z];
+    // A tetrahedron missing a face.
+    let open = IndexedMesh::new(v.clone(), vec![[0, 2, 1], [0, 1, 3], [1, 2, 3]]);
+    assert!(matches!(
+        Polyhedral::from_mesh(&open),
+        Err(PolyhedralError::NotManifold(_))
+    ));
+    let out_of_range = Polyhedral::from_faces(v.clone(), vec![vec![0, 1, 9]]);
+    assert!(matches!(out_of_range, Err(PolyhedralError::Faces(_))));
+    let mut nan = v;
+    nan[3].z = f64::NAN;
+    let closed = vec![[0, 2, 1], [0, 1, 3], [1, 2, 3], [0, 3, 2]];
+    assert!(Polyhedral::from_mesh(&IndexedMesh::new(nan, closed)).is_err());
+}

@@ -1,0 +1,121 @@
+//! `solidkit mesh --method polyhedral`: OpenSCAD models and JSON trees of polyhedra built by mesh
+//! Booleans, checked against exact volumes and topology; a part with no polyhedral form falls
+//! back to marching cubes with a warning naming it; grid options are refused.
+
+use serde_json::Value;
+use solidkit_tests::path_str;
+use std::process::Output;
+
+fn solidkit(args: &[&str]) -> Output {
+    solidkit_tests::run_cli(env!("CARGO_BIN_EXE_solidkit"), args)
+}
+
+fn polyhedral(name: &str, text: &str, extra: &[&str]) -> (Output, Option<Value>) {
+    let dir = tempfile::tempdir().expect("temp dir");
+    let model = dir.path().join(name);
+    std::fs::write(&model, text).expect("write");
+    let mut args = vec!["mesh", path_str(&model), "--method", "polyhedral", "--json"];
+    args.extend(extra);
+    let o = solidkit(&args);
+    let r = serde_json::from_slice(&o.stdout).ok();
+    (o, r)
+}
+
+/// Area of OpenSCAD's regular `n`-gon of circumradius `r`.
+fn ngon(r: f64, n: f64) -> f64 {
+    0.5 * n * r * r * (2.0 * std::f64::consts::PI / n).sin()
+}
+
+#[test]
+fn a_box_with_faceted_holes_is_exact_and_small() {
+    // Two through-holes of $fn = 16 flush with nothing: the volume is the prism arithmetic.
+    let csg = "difference() { cube(size = [20, 20, 10]);
+        multmatrix([[1,0,0,5],[0,1,0,10],[0,0,1,-1],[0,0,0,1]]) cylinder(h = 12, r = 3, $fn = 16);
+        multmatrix([[1,0,0,15],[0,1,0,10],[0,0,1,-1],[0,0,0,1]]) cylinder(h = 12, r = 3, $fn = 16); }";
+    let (o, r) = polyhedral("m.csg", csg, &[]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let r = r.expect("JSON");
+    let exact = 20.0 * 20.0 * 10.0 - 2.0 * 10.0 * ngon(3.0, 16.0);
+    assert!(
+        (r["volume"].as_f64().unwrap() - exact).abs() < 1e-9 * exact,
+        "{r}"
+    );
+    assert_eq!(
+        (r["shells"].as_u64(), r["genus"].as_i64()),
+        (Some(1), Some(2)),
+        "{r}"
+    );
+    assert_eq!(r["closed"], true);
+    assert_eq!(r["self_intersections"], 0);
+    assert_eq!(r["method"], "polyhedral");
+    // The faces of 2 sixteen-sided holes through a box: hundreds of triangles, not 10⁵.
+    assert!(r["faces"].as_u64().unwrap() < 400, "{r}");
+}
+
+#[test]
+fn coincident_faces_and_edge_contact_as_exact_kernels_keep_them() {
+    // Three cubes: two sharing a face (one solid), one touching them along an edge only.
+    let csg = "union() { cube(1); multmatrix([[1,0,0,1],[0,1,0,0],[0,0,1,0],[0,0,0,1]]) cube(1);
+        multmatrix([[1,0,0,2],[0,1,0,1],[0,0,1,0],[0,0,0,1]]) cube(1); }";
+    let (o, r) = polyhedral("m.csg", csg, &[]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let r = r.expect("JSON");
+    assert!((r["volume"].as_f64().unwrap() - 3.0).abs() < 1e-12, "{r}");
+    // Two shells, as manifold3d keeps them; they touch along the edge, which the report's
+    // self-intersection test sees as contact between the shells.
+    assert_eq!(r["shells"].as_u64(), Some(2), "{r}");
+    assert_eq!(r["faces"].as_u64(), Some(32), "{r}");
+}
+
+#[test]
+fn extrusions_turns_and_hulls() {
+    // A square frame extruded (a hole in the profile), a full turn of a square at $fn = 8.
+    let csg = "linear_extrude(height = 2) difference() { square(4, center = true); square(2, center = true); }
+        multmatrix([[1,0,0,20],[0,1,0,0],[0,0,1,0],[0,0,0,1]]) rotate_extrude($fn = 8) multmatrix([[1,0,0,2],[0,1,0,0],[0,0,1,0],[0,0,0,1]]) square(1);";
+    let (o, r) = polyhedral("m.csg", csg, &[]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let r = r.expect("JSON");
+    // The turned square: an octagonal ring between circumradii 2 and 3, height 1.
+    let ring = ngon(3.0, 8.0) - ngon(2.0, 8.0);
+    let exact = 2.0 * 12.0 + ring;
+    assert!(
+        (r["volume"].as_f64().unwrap() - exact).abs() < 1e-9 * exact,
+        "{r}"
+    );
+    assert_eq!(
+        (r["shells"].as_u64(), r["genus"].as_i64()),
+        (Some(2), Some(2)),
+        "{r}"
+    );
+    let hull = "hull() { cube(1); multmatrix([[1,0,0,3],[0,1,0,0],[0,0,1,0],[0,0,0,1]]) cube(1); }";
+    let (_, r) = polyhedral("h.csg", hull, &[]);
+    assert!((r.expect("JSON")["volume"].as_f64().unwrap() - 4.0).abs() < 1e-12);
+}
+
+#[test]
+fn json_trees_of_polyhedra_and_the_fallback() {
+    let tree = r#"{"format":"solidkit-tree","version":1,"root":{"type":"difference","children":[
+        {"type":"box","size":[2,2,2]},
+        {"type":"translate","offset":[1,0,0],"child":{"type":"box","size":[2,1,1]}}]}}"#;
+    let (o, r) = polyhedral("t.json", tree, &[]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    assert!((r.expect("JSON")["volume"].as_f64().unwrap() - 7.0).abs() < 1e-12);
+    // A sphere has no polyhedral form: marching cubes instead, and a warning that says so.
+    let round = r#"{"format":"solidkit-tree","version":1,"root":{"type":"sphere","radius":1}}"#;
+    let (o, r) = polyhedral("s.json", round, &[]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let r = r.expect("JSON");
+    let w = r["warnings"].to_string();
+    assert!(
+        w.contains("`sphere` is not a polyhedron") && w.contains("marching cubes"),
+        "{w}"
+    );
+    assert_eq!(r["method"], "mc");
+}
+
+#[test]
+fn grid_options_are_refused() {
+    let (o, _) = polyhedral("m.csg", "cube(1);", &["--tolerance", "0.1"]);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&o.stderr).contains("--tolerance"));
+}
