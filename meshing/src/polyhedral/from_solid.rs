@@ -3,7 +3,6 @@
 //! and colours. Post-order over an explicit stack: any depth is safe.
 
 use super::{Polyhedral, PolyhedralError, difference, intersection_all, union_all};
-use glam::DVec3;
 use solidkit_kernel::NodeKind;
 use solidkit_kernel::Solid;
 use solidkit_kernel::primitive::Primitive;
@@ -20,30 +19,10 @@ pub enum NotPolyhedral {
     Failed(#[from] PolyhedralError),
 }
 
-/// The box of size `size` centred at the origin.
-fn cuboid(size: DVec3) -> Result<Polyhedral, PolyhedralError> {
-    let h = size / 2.0;
-    let v: Vec<DVec3> = (0..8)
-        .map(|i| {
-            let s = DVec3::new((i & 1) as f64, ((i >> 1) & 1) as f64, (i >> 2) as f64);
-            (s * 2.0 - 1.0) * h
-        })
-        .collect();
-    let f = vec![
-        vec![0, 2, 3, 1],
-        vec![4, 5, 7, 6],
-        vec![0, 1, 5, 4],
-        vec![2, 6, 7, 3],
-        vec![0, 4, 6, 2],
-        vec![1, 3, 7, 5],
-    ];
-    Polyhedral::from_faces(v, f)
-}
-
 /// The leaf's polyhedron, or why it has none.
 fn leaf(p: &Primitive) -> Result<Polyhedral, NotPolyhedral> {
     match p {
-        Primitive::Cuboid(c) => Ok(cuboid(c.size)?),
+        Primitive::Cuboid(c) => Ok(Polyhedral::cuboid(-c.size / 2.0, c.size)?),
         Primitive::Mesh(m) => Ok(Polyhedral::from_mesh(&m.to_indexed())?),
         other => Err(NotPolyhedral::Node(other.name().to_string())),
     }

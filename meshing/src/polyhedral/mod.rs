@@ -58,6 +58,22 @@ impl Polyhedral {
         Polyhedral(Manifold::empty())
     }
 
+    /// The box from corner `lo` with side lengths `size`: 6 quads, 12 triangles.
+    pub fn cuboid(lo: DVec3, size: DVec3) -> Result<Self, PolyhedralError> {
+        let v = (0..8)
+            .map(|i| lo + size * DVec3::new((i & 1) as f64, ((i >> 1) & 1) as f64, (i >> 2) as f64))
+            .collect();
+        let f = vec![
+            vec![0, 2, 3, 1],
+            vec![4, 5, 7, 6],
+            vec![0, 1, 5, 4],
+            vec![2, 6, 7, 3],
+            vec![0, 4, 6, 2],
+            vec![1, 3, 7, 5],
+        ];
+        Self::from_faces(v, f)
+    }
+
     /// A solid from vertices and planar polygonal faces, counter-clockwise seen from outside
     /// (triangulated in their planes by constrained Delaunay triangulation).
     pub fn from_faces(vertices: Vec<DVec3>, faces: Vec<Vec<u32>>) -> Result<Self, PolyhedralError> {

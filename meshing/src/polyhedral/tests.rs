@@ -4,20 +4,8 @@
 use super::*;
 use crate::{ReportOptions, TopologyReport};
 
-/// The box `[lo, lo + size]` as 6 quads, counter-clockwise seen from outside.
 fn cuboid(lo: DVec3, size: DVec3) -> Polyhedral {
-    let v: Vec<DVec3> = (0..8)
-        .map(|i| lo + size * DVec3::new((i & 1) as f64, ((i >> 1) & 1) as f64, (i >> 2) as f64))
-        .collect();
-    let f = vec![
-        vec![0, 2, 3, 1],
-        vec![4, 5, 7, 6],
-        vec![0, 1, 5, 4],
-        vec![2, 6, 7, 3],
-        vec![0, 4, 6, 2],
-        vec![1, 3, 7, 5],
-    ];
-    Polyhedral::from_faces(v, f).expect("a box")
+    Polyhedral::cuboid(lo, size).expect("a box")
 }
 
 fn report(p: &Polyhedral) -> TopologyReport {

@@ -149,20 +149,7 @@ fn solid_track(
                 .flag("center", Some(1), false)
                 .map_err(|e| not(stmt, e.to_string()))?;
             let lo = if centred { -size / 2.0 } else { DVec3::ZERO };
-            let v = (0..8)
-                .map(|i| {
-                    lo + size * DVec3::new((i & 1) as f64, ((i >> 1) & 1) as f64, (i >> 2) as f64)
-                })
-                .collect();
-            let f = vec![
-                vec![0, 2, 3, 1],
-                vec![4, 5, 7, 6],
-                vec![0, 1, 5, 4],
-                vec![2, 6, 7, 3],
-                vec![0, 4, 6, 2],
-                vec![1, 3, 7, 5],
-            ];
-            faces(stmt, (v, f))
+            Polyhedral::cuboid(lo, size).map_err(failed)
         }
         "sphere" => {
             let r = radius(stmt, "r", "d", 0, 1.0).map_err(|e| not(stmt, e.to_string()))?;

@@ -66,20 +66,24 @@ pub(super) fn stepped_turn(
             let (a, b) = (start + i, start + (i + 1) % l.len());
             for j in 0..steps {
                 let quad = [index[j][a], index[j + 1][a], index[j + 1][b], index[j][b]];
-                let mut face: Vec<u32> = Vec::with_capacity(4);
-                for v in quad {
-                    if face.last() != Some(&v) && face.first() != Some(&v) {
-                        face.push(v);
-                    }
-                }
-                if face.len() >= 3 {
-                    faces.push(face);
-                }
+                faces.extend(side_face(quad));
             }
         }
         start += l.len();
     }
     Some((vertices, faces))
+}
+
+/// The face between two copies of a profile edge: the quad, with corners on the axis (one
+/// vertex for every copy) merged; `None` when fewer than 3 corners are left.
+fn side_face(quad: [u32; 4]) -> Option<Vec<u32>> {
+    let mut face: Vec<u32> = Vec::with_capacity(4);
+    for v in quad {
+        if face.last() != Some(&v) && face.first() != Some(&v) {
+            face.push(v);
+        }
+    }
+    (face.len() >= 3).then_some(face)
 }
 
 /// A closed mesh of the even-odd region of `loops` (at x ≥ 0, y up) turned a full turn about z
@@ -127,15 +131,7 @@ pub(super) fn full_turn(
             for j in 0..steps {
                 let k = (j + 1) % steps;
                 let quad = [index[j][a], index[k][a], index[k][b], index[j][b]];
-                let mut face: Vec<u32> = Vec::with_capacity(4);
-                for v in quad {
-                    if face.last() != Some(&v) && face.first() != Some(&v) {
-                        face.push(v);
-                    }
-                }
-                if face.len() >= 3 {
-                    faces.push(face);
-                }
+                faces.extend(side_face(quad));
             }
         }
         first += l.len();
