@@ -119,3 +119,57 @@ fn grid_options_are_refused() {
     assert_eq!(o.status.code(), Some(2));
     assert!(String::from_utf8_lossy(&o.stderr).contains("--tolerance"));
 }
+
+#[test]
+fn half_turns_meet_flush_and_join() {
+    // Debian's Basics/rotate_extrude.scad: two half rings of opposite sense end on the plane
+    // y = 0, flush with each other and with a third ring of twice the radius, closing a loop.
+    // Their end caps lie exactly in that plane (sin 180° is 0), so the union is one solid.
+    let ring = |dx: f64, angle: f64, x: f64| {
+        format!(
+            "multmatrix([[1,0,0,{dx}],[0,1,0,0],[0,0,1,0],[0,0,0,1]]) rotate_extrude(angle = {angle}) \
+             multmatrix([[1,0,0,{x}],[0,1,0,0],[0,0,1,0],[0,0,0,1]]) square(size = [5, 5]);"
+        )
+    };
+    let csg = format!(
+        "union() {{ {} {} {} }}",
+        ring(0.0, 180.0, 12.5),
+        ring(7.5, 180.0, 5.0),
+        ring(-7.5, -180.0, 5.0)
+    );
+    let (o, r) = polyhedral("m.csg", &csg, &[]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let r = r.expect("JSON");
+    assert_eq!(
+        (r["shells"].as_u64(), r["genus"].as_i64()),
+        (Some(1), Some(1)),
+        "{r}"
+    );
+    assert_eq!(r["self_intersections"], 0, "{r}");
+}
+
+#[test]
+fn projections_are_the_polyhedra_sections_and_shadows() {
+    // The cut of OpenSCAD's 16-fragment sphere at its equator is the 16-gon between its two
+    // middle rings (polar angles 78.75° and 101.25°); the shadow of a cube turned 45° about x
+    // is a 10 × 10√2 rectangle. Both extruded 1 high: their areas are the volumes.
+    let csg = "linear_extrude(height = 1) projection(cut = true) sphere(r = 10, $fn = 16);
+        multmatrix([[1,0,0,30],[0,1,0,0],[0,0,1,0],[0,0,0,1]]) linear_extrude(height = 1)
+        projection(cut = false) multmatrix([[1,0,0,0],[0,0.70710678118654757,-0.70710678118654746,0],
+        [0,0.70710678118654746,0.70710678118654757,0],[0,0,0,1]]) cube(10, center = true);";
+    let (o, r) = polyhedral("m.csg", csg, &[]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let r = r.expect("JSON");
+    let section = ngon(10.0 * 78.75f64.to_radians().sin(), 16.0);
+    let shadow = 100.0 * 2f64.sqrt();
+    let v = r["volume"].as_f64().unwrap();
+    // Corners are rounded to a grid of 2⁻²⁰ of the extent (2⁻¹⁵ here), as OpenSCAD rounds
+    // its 2D results to 2⁻¹⁶.
+    assert!(
+        (v - (section + shadow)).abs() < 1e-5 * v,
+        "{v} vs {}",
+        section + shadow
+    );
+    assert_eq!(r["shells"].as_u64(), Some(2), "{r}");
+    assert_eq!(r["warnings"], serde_json::json!([]), "nothing sampled: {r}");
+}

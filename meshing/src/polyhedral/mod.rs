@@ -14,9 +14,11 @@
 
 mod from_solid;
 mod reduce;
+mod sections;
 
 pub use from_solid::{NotPolyhedral, from_solid};
 pub use reduce::{difference, intersection_all, union_all};
+pub use sections::Loops;
 
 use glam::{DAffine3, DVec3};
 use manifold_rust::linalg::{Mat3x4, Vec3};

@@ -113,3 +113,41 @@ fn open_or_bad_meshes_are_refused() {
     let closed = vec![[0, 2, 1], [0, 1, 3], [1, 2, 3], [0, 3, 2]];
     assert!(Polyhedral::from_mesh(&IndexedMesh::new(nan, closed)).is_err());
 }
+
+fn loops_area(loops: &[Vec<glam::DVec2>]) -> f64 {
+    loops
+        .iter()
+        .map(|l| {
+            (0..l.len())
+                .map(|i| l[i].perp_dot(l[(i + 1) % l.len()]))
+                .sum::<f64>()
+                / 2.0
+        })
+        .sum()
+}
+
+#[test]
+fn sections_keep_a_face_in_the_plane_from_either_side() {
+    // A 2 × 3 box standing on z = 0, one hanging below it, one crossing it, and one off it.
+    for (z, want) in [(0.0, 6.0), (-1.0, 6.0), (-0.5, 6.0), (0.5, 0.0)] {
+        let p = cuboid(DVec3::new(0.0, 0.0, z), DVec3::new(2.0, 3.0, 1.0));
+        let got = loops_area(&p.section_at_zero().expect("section"));
+        assert!((got - want).abs() < 1e-9, "z {z}: area {got}, want {want}");
+    }
+}
+
+#[test]
+fn a_shadow_is_the_union_of_the_parts_outlines() {
+    // Two 2 × 2 × 1 boxes overlapping by 1 in x, one above the other: a 3 × 2 shadow with the
+    // overlap counted once; a box turned 45° about z casts a square of the same area.
+    let a = cuboid(DVec3::ZERO, DVec3::new(2.0, 2.0, 1.0));
+    let b = cuboid(DVec3::new(1.0, 0.0, 3.0), DVec3::new(2.0, 2.0, 1.0));
+    let both = union_all(vec![a.clone(), b]).expect("union");
+    assert!((loops_area(&both.shadow().expect("shadow")) - 6.0).abs() < 1e-9);
+    let turned = a.transform(&DAffine3::from_rotation_z(std::f64::consts::FRAC_PI_4));
+    // Corners at ±√2 round to the kernel's 2D grid of 1e-8.
+    let got = loops_area(&turned.shadow().expect("shadow"));
+    assert!((got - 4.0).abs() < 1e-7, "{got}");
+    let far = a.transform(&DAffine3::from_translation(DVec3::new(1e12, 0.0, 0.0)));
+    assert!(far.shadow().is_err() && far.section_at_zero().is_err());
+}

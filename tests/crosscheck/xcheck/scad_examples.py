@@ -5,7 +5,8 @@ Per example, in a private folder that mirrors the example's own (its data files 
 since `.csg` exports name them relative to the model):
 1. `openscad -o X.csg` (the export solidkit reads) and `openscad -o X.stl` (OpenSCAD's own CGAL
    render, timed, with a per-file time limit);
-2. `solidkit --threads 1 mesh X.csg --facets openscad -o X-solidkit.stl --json` (timed);
+2. `solidkit --threads 1 mesh X.csg --method polyhedral -o X-solidkit.stl --json` (timed; a part
+   with no polyhedral form is meshed by marching cubes instead, and the table says so);
 3. both meshes measured by the same numpy code (xcheck.measure), and their Hausdorff distance by
    `solidkit compare`.
 
@@ -35,11 +36,13 @@ from . import measure, meshio, paths
 
 EXAMPLES = Path(os.environ.get("SCAD_EXAMPLES_DIR", "/usr/share/openscad/examples"))
 SETTINGS_FILE = paths.FIXTURES / "openscad_examples.json"
-# solidkit's settings for every example: 256 cells along the longest side (at the default 128, a
-# cell is 0.78 % of the longest side, more than the Hausdorff tolerance allows at sharp features),
-# dual contouring (OpenSCAD's models are faceted: sharp edges everywhere), no refinement search,
-# no self-intersection count (the checks below measure the mesh themselves).
-ARGS = ["--method", "dc", "--resolution", "256", "--refine", "1", "--no-self-intersections"]
+# solidkit's settings for every example: polyhedral Booleans (OpenSCAD's own faceted polyhedra
+# combined exactly, as its CGAL render does, with no grid: a slit or sliver thinner than any cell
+# survives). A model with a part that has no polyhedral form (a wedge extruded to a segment) is
+# meshed by marching cubes instead, at 256 cells along the longest side (at the default 128 a cell
+# is 0.78 % of the longest side, more than the Hausdorff tolerance allows at sharp features), with
+# a warning; the table's method column says which examples did. No self-intersection count: the checks below measure the mesh.
+ARGS = ["--method", "polyhedral", "--resolution", "256", "--refine", "1", "--no-self-intersections"]
 VOLUME_TOLERANCE = 0.01
 HAUSDORFF_TOLERANCE = 0.005
 
@@ -253,6 +256,17 @@ def speed(results: list):
     return (statistics.median(ratios) if ratios else None), ratios
 
 
+def method_of(res: dict) -> str:
+    """How solidkit meshed the example: its report's method, or 'mc (fallback)' where a part had
+    no polyhedral form (its warning says which)."""
+    rep = res.get("solidkit_report") or {}
+    if rep.get("method") == "polyhedral":
+        return "polyhedral"
+    if "meshed by marching cubes instead" in res.get("solidkit_stderr", ""):
+        return "mc (fallback)"
+    return str(rep.get("method", ""))
+
+
 def table(results: list, conf: dict) -> str:
     """The per-example table (Markdown) with the counts and the speed ratio."""
     counts = {}
@@ -282,7 +296,7 @@ def table(results: list, conf: dict) -> str:
         elif verdict == "differ" and conf.get(r["name"], {}).get("known_bug"):
             verdict = "differ (FAILURE, known solidkit bug)"
         lines.append(f"| {r['name']} | {r.get('openscad_status', '')} | {r.get('openscad_s', 0):.2f} | "
-                     f"{r.get('solidkit_s', 0):.2f} | {ratio} | {topo} | {vol} | {hd} | {verdict} |")
+                     f"{r.get('solidkit_s', 0):.2f} | {ratio} | {method_of(r)} | {topo} | {vol} | {hd} | {verdict} |")
     lines.append("")
     for r in results:
         if r["reasons"]:

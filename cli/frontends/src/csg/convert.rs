@@ -89,7 +89,7 @@ pub fn convert_with(
             .map(|&c| results[c].take().expect("child converted"))
             .collect();
         let mut infos: Vec<Option<Hullable>> = kids.iter().map(|&c| hullable[c].take()).collect();
-        let kid_polys: Vec<Option<Track>> = if polyhedral {
+        let mut kid_polys: Vec<Option<Track>> = if polyhedral {
             kids.iter().map(|&c| polys[c].take()).collect()
         } else {
             Vec::new()
@@ -114,12 +114,24 @@ pub fn convert_with(
                 }
             }
         }
+        // The polyhedra's exact projection, where every 3D child has one; else it is sampled.
+        let projected = (polyhedral && stmt.name == "projection")
+            .then(|| polyhedral::projection(stmt, &dims, &mut kid_polys))
+            .flatten();
         let (geom, info) = match stmt.name.as_str() {
             "hull" => hull(stmt, children, infos, &mut ctx)?,
             "minkowski" => minkowski(tree, &kids, stmt, children, infos, &mut ctx)?,
             _ => {
                 let facets = if hulled { Facets::OpenScad } else { facets };
-                let geom = node(stmt, children, facets, &mut ctx)?;
+                let geom = match projected {
+                    Some(region) => {
+                        if dims.contains(&polyhedral::Dim::Flat) {
+                            ctx.warn(stmt, "ignoring 2D child object for projection");
+                        }
+                        region.map_or(Geom::Empty, Geom::Flat)
+                    }
+                    None => node(stmt, children, facets, &mut ctx)?,
+                };
                 let info = if hulled {
                     hullable_of(stmt, &geom, infos)?
                 } else {

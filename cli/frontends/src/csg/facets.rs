@@ -40,7 +40,7 @@ pub fn fragments(r: f64, res: Resolution) -> usize {
 }
 
 /// `sin` of degrees, exact at multiples of 90° like OpenSCAD's `sin_degrees`.
-fn sin_degrees(x: f64) -> f64 {
+pub(super) fn sin_degrees(x: f64) -> f64 {
     let x = x.rem_euclid(360.0);
     if x.rem_euclid(90.0) == 0.0 {
         [0.0, 1.0, 0.0, -1.0][(x / 90.0) as usize % 4]
@@ -50,7 +50,7 @@ fn sin_degrees(x: f64) -> f64 {
 }
 
 /// `cos` of degrees, exact at multiples of 90°.
-fn cos_degrees(x: f64) -> f64 {
+pub(super) fn cos_degrees(x: f64) -> f64 {
     sin_degrees(x + 90.0)
 }
 

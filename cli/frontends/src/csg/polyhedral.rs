@@ -283,3 +283,48 @@ fn rotate_extrude(stmt: &Stmt, flat: &Flat) -> Track {
     }
     Ok(p)
 }
+
+/// `projection` of the 3D children's polyhedra, exact: the section by z = 0 (`cut`) or the
+/// shadow, from the polyhedron's own edges. `Some(None)` for an empty result; `None` when a 3D
+/// child has no polyhedron or the kernel fails, and the field track samples it instead.
+pub(super) fn projection(
+    stmt: &Stmt,
+    dims: &[Dim],
+    kids: &mut [Option<Track>],
+) -> Option<Option<Flat>> {
+    let mut solids = Vec::new();
+    for (d, k) in dims.iter().zip(kids.iter_mut()) {
+        if *d == Dim::Solid {
+            solids.push(k.take()?.ok()?);
+        }
+    }
+    let cut = stmt.flag("cut", Some(0), false).ok()?;
+    let solid = union_all(solids).ok()?;
+    let loops = if cut {
+        solid.section_at_zero()
+    } else {
+        solid.shadow()
+    }
+    .ok()?;
+    Some(region::to_flat(region::positive(snapped(loops)).ok()?))
+}
+
+/// The loops' corners rounded to a grid of 2⁻²⁰ of their extent (a power of two, so exact).
+/// A shadow unites many faces' outlines, and its corners can come out closer than single
+/// precision tells apart (STL's): such near twins, written to an STL, become one vertex and
+/// fold the extruded walls onto each other. On the grid they are one corner, and pieces whose
+/// edges nearly touch share them, which the union then joins (OpenSCAD's own 2D grid is 2⁻¹⁶
+/// model units).
+fn snapped(mut loops: Vec<Vec<DVec2>>) -> Vec<Vec<DVec2>> {
+    let reach = loops
+        .iter()
+        .flatten()
+        .fold(0.0f64, |m, p| m.max(p.abs().max_element()));
+    if reach > 0.0 {
+        let step = (reach * 2f64.powi(-20)).log2().floor().exp2();
+        for p in loops.iter_mut().flatten() {
+            *p = (*p / step).round() * step;
+        }
+    }
+    loops
+}

@@ -12,9 +12,13 @@ use super::facets;
 use super::flat::{Flat, Leaf2, Op2};
 use glam::DVec2;
 use i_overlay::core::fill_rule::FillRule;
+use i_overlay::core::overlay::ShapeType;
 use i_overlay::core::overlay_rule::OverlayRule;
+use i_overlay::float::overlay::FloatOverlay;
 use i_overlay::float::simplify::SimplifyShape;
 use i_overlay::float::single::SingleFloatOverlay;
+use i_overlay::i_float::adapter::FloatPointAdapter;
+use i_overlay::i_float::float::rect::FloatRect;
 
 /// One connected region: outline (counter-clockwise), then holes (clockwise).
 pub type Shape = Vec<Vec<DVec2>>;
@@ -123,40 +127,124 @@ pub fn boolean(a: &[Shape], b: &[Shape], rule: OverlayRule) -> Result<Vec<Shape>
     Ok(from_raw(ra.overlay_as::<i64>(&rb, rule, FillRule::NonZero)))
 }
 
-/// The region of one leaf.
-fn leaf_shapes(leaf: &Leaf2, how: Facets) -> Result<Vec<Shape>, RegionError> {
-    match leaf {
-        Leaf2::Circle {
-            center,
-            radius,
-            res,
-        } => {
-            let n = disc_sides(facets::fragments(*radius, *res), how);
-            positive(vec![ccw(disc(*center, *radius, n))])
+/// One integer grid for every clipping step of a region's evaluation, fitted to all of its
+/// leaves at once. With a grid per call (the float API's default) each partial result is
+/// rounded to its own grid, and pieces that share an edge in the input (OpenSCAD exports a
+/// crescent as 16 quads) come apart by that rounding: their union is shapes touching along
+/// slivers, not one polygon. On one grid a shared corner is one integer point in every call.
+struct Grid(FloatPointAdapter<[f64; 2], i64>);
+
+impl Grid {
+    /// The grid of every leaf of `flat` (`None` when it has no leaves); an error for a
+    /// coordinate clipping does not take.
+    fn of(flat: &Flat) -> Result<Option<Grid>, RegionError> {
+        let mut rect: Option<FloatRect<f64>> = None;
+        let mut add = |p: DVec2| -> Result<(), RegionError> {
+            let [x, y] = to_raw(&[p])?[0];
+            match &mut rect {
+                Some(r) => r.unsafe_add_point(&[x, y]),
+                None => rect = Some(FloatRect::new(x, x, y, y).map_err(|e| format!("{e:?}"))?),
+            }
+            Ok(())
+        };
+        for op in &flat.0 {
+            match op {
+                Op2::Leaf(Leaf2::Circle { center, radius, .. }) => {
+                    add(*center - DVec2::splat(*radius))?;
+                    add(*center + DVec2::splat(*radius))?;
+                }
+                Op2::Leaf(Leaf2::Polygon(loops)) => {
+                    for p in loops.iter().flatten() {
+                        add(*p)?;
+                    }
+                }
+                _ => {}
+            }
         }
-        Leaf2::Polygon(loops) => {
-            let raw: Vec<Vec<[f64; 2]>> =
-                loops.iter().map(|l| to_raw(l)).collect::<Result<_, _>>()?;
-            Ok(from_raw(raw.simplify_shape_as::<i64>(FillRule::EvenOdd)))
+        Ok(rect.map(|r| Grid(FloatPointAdapter::new_conservative(r))))
+    }
+
+    /// `rule` applied to subject and clip loops (`fill` deciding each side's inside).
+    fn overlay(
+        &self,
+        subject: &[Vec<DVec2>],
+        clip: &[Vec<DVec2>],
+        rule: OverlayRule,
+        fill: FillRule,
+    ) -> Vec<Shape> {
+        let raw = |loops: &[Vec<DVec2>]| -> Vec<Vec<[f64; 2]>> {
+            loops
+                .iter()
+                .filter(|l| l.len() >= 3)
+                .map(|l| l.iter().map(|p| [p.x, p.y]).collect())
+                .collect()
+        };
+        let mut overlay = FloatOverlay::<[f64; 2], i64>::with_adapter(self.0.clone(), 0)
+            .unsafe_add_source(&raw(subject), ShapeType::Subject)
+            .unsafe_add_source(&raw(clip), ShapeType::Clip);
+        from_raw(overlay.overlay(rule, fill))
+    }
+
+    /// The region of one leaf.
+    fn leaf(&self, leaf: &Leaf2, how: Facets) -> Vec<Shape> {
+        match leaf {
+            Leaf2::Circle {
+                center,
+                radius,
+                res,
+            } => {
+                let n = disc_sides(facets::fragments(*radius, *res), how);
+                let disc = [ccw(disc(*center, *radius, n))];
+                self.overlay(&disc, &[], OverlayRule::Subject, FillRule::Positive)
+            }
+            Leaf2::Polygon(loops) => {
+                self.overlay(loops, &[], OverlayRule::Subject, FillRule::EvenOdd)
+            }
+        }
+    }
+
+    /// `op` (a Boolean instruction) of its operands (outlines counter-clockwise and holes
+    /// clockwise, so a union is where the winding number is positive): a union or the
+    /// subtrahends of a difference in one overlay.
+    fn boolean(&self, op: &Op2, parts: Vec<Vec<Shape>>) -> Vec<Shape> {
+        let mut parts = parts.into_iter();
+        let first: Vec<Vec<DVec2>> = parts
+            .next()
+            .unwrap_or_default()
+            .into_iter()
+            .flatten()
+            .collect();
+        match op {
+            Op2::Union(_) => {
+                let all: Vec<Vec<DVec2>> =
+                    first.into_iter().chain(parts.flatten().flatten()).collect();
+                self.overlay(&all, &[], OverlayRule::Subject, FillRule::Positive)
+            }
+            Op2::Difference(_) => {
+                let rest: Vec<Vec<DVec2>> = parts.flatten().flatten().collect();
+                self.overlay(&first, &rest, OverlayRule::Difference, FillRule::Positive)
+            }
+            _ => {
+                let first = self.overlay(&first, &[], OverlayRule::Subject, FillRule::Positive);
+                parts.fold(first, |acc, p| {
+                    let a: Vec<Vec<DVec2>> = acc.into_iter().flatten().collect();
+                    let b: Vec<Vec<DVec2>> = p.into_iter().flatten().collect();
+                    self.overlay(&a, &b, OverlayRule::Intersect, FillRule::Positive)
+                })
+            }
         }
     }
 }
 
-/// The region a [`Flat`] program describes, as polygons.
+/// The region a [`Flat`] program describes, as polygons, every step on one grid ([`Grid`]).
 pub fn shapes(flat: &Flat, how: Facets) -> Result<Vec<Shape>, RegionError> {
+    let Some(grid) = Grid::of(flat)? else {
+        return Ok(Vec::new());
+    };
     flat.evaluate(
-        |leaf| Ok::<_, RegionError>(leaf_shapes(leaf, how)),
-        |op, parts| {
-            let mut parts = parts.into_iter();
-            let first = parts.next().unwrap_or(Ok(Vec::new()));
-            let rule = match op {
-                Op2::Union(_) => OverlayRule::Union,
-                Op2::Difference(_) => OverlayRule::Difference,
-                _ => OverlayRule::Intersect,
-            };
-            parts.fold(first, |acc, p| boolean(&acc?, &p?, rule))
-        },
-    )?
+        |leaf| Ok::<_, RegionError>(grid.leaf(leaf, how)),
+        |op, parts| grid.boolean(op, parts),
+    )
 }
 
 /// The shapes as a [`Flat`] (one polygon leaf per shape, united); `None` when there are none.
@@ -303,5 +391,34 @@ mod tests {
             flat.0,
             vec![Op2::Leaf(Leaf2::Polygon(vec![square(0.0, 4.0)]))]
         );
+    }
+
+    /// OpenSCAD exports a crescent as quads sharing edges, corners to 6 significant digits
+    /// (Debian's `Old_example020`); their union is one polygon, whatever grid the clipper
+    /// fits, and so is the same crescent cut from a disc by the quads as subtrahends.
+    #[test]
+    fn pieces_sharing_edges_unite_into_one_shape() {
+        let round = |v: f64| (v * 1e4).round() / 1e4;
+        let at = |r: f64, deg: f64| {
+            let (s, c) = deg.to_radians().sin_cos();
+            DVec2::new(round(r * c), round(r * s))
+        };
+        let quads: Vec<Flat> = (0..16)
+            .map(|i| {
+                let (a, b) = (i as f64 * 18.75, (i + 1) as f64 * 18.75);
+                let quad = vec![at(110.0, a), at(90.0, a), at(90.0, b), at(110.0, b)];
+                Flat::leaf(Leaf2::Polygon(vec![quad]))
+            })
+            .collect();
+        let united = shapes(&Flat::combine(quads.clone(), Op2::Union), Facets::OpenScad).unwrap();
+        assert_eq!(united.len(), 1, "{} shapes", united.len());
+        assert_eq!(united[0].len(), 1, "no slits inside");
+        let disc = Flat::leaf(Leaf2::Polygon(vec![square(-200.0, 200.0)]));
+        let mut parts = vec![disc];
+        parts.extend(quads);
+        let cut = shapes(&Flat::combine(parts, Op2::Difference), Facets::OpenScad).unwrap();
+        assert_eq!(cut.len(), 1);
+        assert_eq!(cut[0].len(), 2, "the square with one crescent-shaped hole");
+        assert!((area(&cut) - (400.0 * 400.0 - area(&united))).abs() < 1e-6);
     }
 }

@@ -7,6 +7,7 @@
 //! Counted in OpenSCAD 2021.01's renders: 90° at 30 fragments is 7 steps, 100° at `$fn = 7`
 //! one step, 200° at 30 fragments 16.
 
+use super::facets::{cos_degrees, sin_degrees};
 use super::sliced::oriented;
 use glam::{DVec2, DVec3};
 use solidkit_kernel::profile::triangulate;
@@ -47,7 +48,7 @@ pub(super) fn stepped_turn(
         }
     }
     for (j, row) in index.iter_mut().enumerate() {
-        let (sin, cos) = (angle * j as f64 / steps as f64).to_radians().sin_cos();
+        let (sin, cos) = sin_cos_degrees(angle * j as f64 / steps as f64);
         for (c, p) in corners.iter().enumerate() {
             if p.x > 0.0 {
                 row[c] = vertices.len() as u32;
@@ -72,6 +73,12 @@ pub(super) fn stepped_turn(
         start += l.len();
     }
     Some((vertices, faces))
+}
+
+/// `(sin, cos)` of `degrees`, exact at multiples of 90° as in OpenSCAD's turns (so a half
+/// turn's end cap lies exactly in the plane y = 0, flush with its neighbours').
+fn sin_cos_degrees(degrees: f64) -> (f64, f64) {
+    (sin_degrees(degrees), cos_degrees(degrees))
 }
 
 /// The face between two copies of a profile edge: the quad, with corners on the axis (one
@@ -113,9 +120,7 @@ pub(super) fn full_turn(
         }
     }
     for (j, row) in index.iter_mut().enumerate() {
-        let (sin, cos) = (start + 360.0 * j as f64 / steps as f64)
-            .to_radians()
-            .sin_cos();
+        let (sin, cos) = sin_cos_degrees(start + 360.0 * j as f64 / steps as f64);
         for (c, p) in corners.iter().enumerate() {
             if p.x > 0.0 {
                 row[c] = vertices.len() as u32;
