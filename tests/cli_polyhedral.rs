@@ -173,3 +173,23 @@ fn projections_are_the_polyhedra_sections_and_shadows() {
     assert_eq!(r["shells"].as_u64(), Some(2), "{r}");
     assert_eq!(r["warnings"], serde_json::json!([]), "nothing sampled: {r}");
 }
+
+#[test]
+fn resize_and_offset_profiles_stay_polyhedral() {
+    // resize scales by the polyhedron's own box: [2, 4, 8] to x = 20 with auto is ×10 on every
+    // axis. The round offset of a 48-gon leaves corners 1e-15 apart, which the triangulator
+    // refused before the profile's corners were put on a grid.
+    let csg = "resize(newsize = [20, 0, 0], auto = true) cube(size = [2, 4, 8]);
+        multmatrix([[1,0,0,60],[0,1,0,0],[0,0,1,0],[0,0,0,1]]) linear_extrude(height = 12)
+        offset(r = 1, $fn = 48) circle(r = 8, $fn = 48);";
+    let (o, r) = polyhedral("m.csg", csg, &[]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let r = r.expect("JSON");
+    assert_eq!(r["method"], "polyhedral", "{r}");
+    assert_eq!(r["warnings"], serde_json::json!([]), "{r}");
+    assert_eq!(r["shells"].as_u64(), Some(2), "{r}");
+    // The offset disc lies between the 48-gon of radius 9 and the circle of radius 9.
+    let v = r["volume"].as_f64().unwrap() - 64000.0;
+    let (lo, hi) = (12.0 * ngon(9.0, 48.0), 12.0 * std::f64::consts::PI * 81.0);
+    assert!(v > lo - 1e-6 && v < hi, "{lo} < {v} < {hi}");
+}

@@ -144,6 +144,16 @@ impl Polyhedral {
         Polyhedral(self.0.transform(&t))
     }
 
+    /// The bounding box `(min, max)` of the vertices; `None` when empty.
+    pub fn bounds(&self) -> Option<(DVec3, DVec3)> {
+        if self.is_empty() {
+            return None;
+        }
+        let b = self.0.bounding_box();
+        let v = |c: Vec3| DVec3::new(c.x, c.y, c.z);
+        Some((v(b.min), v(b.max)))
+    }
+
     /// Whether the solid is empty.
     pub fn is_empty(&self) -> bool {
         self.0.is_empty()

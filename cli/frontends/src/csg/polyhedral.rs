@@ -159,6 +159,7 @@ fn solid_track(
             Some((r1, r2, z0, h)) => faces(stmt, facets::cylinder(r1, r2, z0, z0 + h, res()?)),
             None => Ok(Polyhedral::empty()),
         },
+        "resize" => resize(stmt, union_all(operands(dims, kids)?).map_err(failed)?),
         "linear_extrude" => linear_extrude(stmt, flat.ok_or_else(|| not(stmt, "no profile"))?),
         "rotate_extrude" => rotate_extrude(stmt, flat.ok_or_else(|| not(stmt, "no profile"))?),
         "hull" | "minkowski" => {
@@ -202,10 +203,14 @@ fn operands(dims: &[Dim], kids: Vec<Option<Track>>) -> Result<Vec<Polyhedral>, N
     Ok(out)
 }
 
-/// Every loop of the 2D region, as OpenSCAD's polygons.
+/// Every loop of the 2D region, as OpenSCAD's polygons, corners on a grid ([`snapped`]): an
+/// offset's clipping leaves corners 10⁻¹⁵ apart and slivers of no area, which the triangulator
+/// refuses and OpenSCAD's own 2D grid merges.
 fn loops_of(stmt: &Stmt, flat: &Flat) -> Result<Vec<Vec<DVec2>>, NotPolyhedral> {
     let shapes = region::shapes(flat, Facets::OpenScad).map_err(|e| not(stmt, e.to_string()))?;
-    Ok(shapes.into_iter().flatten().collect())
+    let clean = region::positive(snapped(shapes.into_iter().flatten().collect()))
+        .map_err(|e| not(stmt, e.to_string()))?;
+    Ok(clean.into_iter().flatten().collect())
 }
 
 fn linear_extrude(stmt: &Stmt, flat: &Flat) -> Track {
@@ -242,6 +247,22 @@ fn linear_extrude(stmt: &Stmt, flat: &Flat) -> Track {
         p
     } else {
         p.transform(&DAffine3::from_translation(DVec3::new(0.0, 0.0, h / 2.0)))
+    })
+}
+
+/// `resize` of a polyhedron: scaled about the origin so that its own bounding box gets the new
+/// size, with OpenSCAD's rules for zero and `auto` (`resize.rs`).
+fn resize(stmt: &Stmt, p: Polyhedral) -> Track {
+    let (newsize, auto) = super::resize::arguments(stmt).map_err(|e| not(stmt, e.to_string()))?;
+    if newsize.iter().any(|v| !v.is_finite()) {
+        return Ok(Polyhedral::empty());
+    }
+    let Some((lo, hi)) = p.bounds() else {
+        return Ok(p);
+    };
+    Ok(match super::resize::factors(newsize, auto, hi - lo, 3) {
+        Some(k) if k != DVec3::ONE => p.transform(&DAffine3::from_scale(k)),
+        _ => p,
     })
 }
 

@@ -24,7 +24,7 @@ use std::sync::Arc;
 pub const BBOX_RESOLUTION: usize = 256;
 
 /// `newsize` and `auto` of a `resize` statement.
-fn arguments(stmt: &Stmt) -> Result<([f64; 3], [bool; 3]), CsgError> {
+pub(super) fn arguments(stmt: &Stmt) -> Result<([f64; 3], [bool; 3]), CsgError> {
     let mut size = [0.0; 3];
     let bad = || stmt.error("'newsize': expected a vector of up to 3 numbers");
     match stmt.arg("newsize", Some(0)) {
