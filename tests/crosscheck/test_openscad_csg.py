@@ -4,9 +4,9 @@ with the images that `surface` reads copied beside them);
 `solidkit mesh X.csg --facets openscad` must be closed and manifold with OpenSCAD's STL volume
 within 1%, and with exact primitives (default facets) within 1% of the exact volume where
 fixtures/csg/reference.json gives one (and with the genus it states). `--method polyhedral` must
-build every model as a polyhedron (no fallback to the grid, except the models in FALLBACK, which
-must say so in a warning), closed and manifold, with the shells and genus of OpenSCAD's STL and
-its volume within 10⁻⁴ (OpenSCAD's STL is single precision and its 2D grid 2⁻¹⁶ units)."""
+build every model as a polyhedron (no fallback to the grid), closed and manifold, with the shells
+and genus of OpenSCAD's STL and its volume within 10⁻⁴ (OpenSCAD's STL is single precision and
+its 2D grid 2⁻¹⁶ units)."""
 import json
 import shutil
 import subprocess
@@ -22,8 +22,6 @@ REFERENCE = json.loads((CSG / "reference.json").read_text())["models"]
 # The thin twisted walls of polygon_paths need more cells (as in cli/src/frontends/csg/tests.rs),
 # and so do the strokes of the glyphs of text (at 96 cells the volume is 2% low, at 200 0.5%).
 RESOLUTION = {"polygon_paths": 160, "text": 200}
-# Models with a part that has no polyhedral form yet: meshed by marching cubes, with a warning.
-FALLBACK = {"surface_png"}
 POLYHEDRAL_VOLUME = 1e-4
 
 
@@ -94,17 +92,10 @@ def test_polyhedral_agrees_with_openscad(name, exported):
     assert "error" not in got, got.get("error")
     rep = got["reports"]["polyhedral"]
     own, m, os_ = rep["own"], rep["measured"], got["openscad"]
-    if name in FALLBACK:
-        assert own["method"] == "mc" and "meshed by marching cubes instead" in rep["stderr"], (
-            f"{name}: expected the fallback with its warning (remove it from FALLBACK if it is "
-            f"polyhedral now): {own['method']}, {rep['stderr'][-300:]}")
-        tolerance = 0.01
-    else:
-        assert own["method"] == "polyhedral", f"{name}: fell back to the grid: {rep['stderr'][-300:]}"
-        tolerance = POLYHEDRAL_VOLUME
+    assert own["method"] == "polyhedral", f"{name}: fell back to the grid: {rep['stderr'][-300:]}"
     assert m["closed"] and m["manifold"], f"{name} --method polyhedral: STL measures {m}"
     if os_["closed"] and os_["manifold"]:
         assert (m["shells"], m["genus"]) == (os_["shells"], os_["genus"]), (
             f"{name}: shells/genus {m['shells']}/{m['genus']}, OpenSCAD {os_['shells']}/{os_['genus']}")
     v, ov = m["volume"], os_["volume"]
-    assert abs(v - ov) <= tolerance * abs(ov), f"{name}: --method polyhedral volume {v} vs OpenSCAD's STL {ov}"
+    assert abs(v - ov) <= POLYHEDRAL_VOLUME * abs(ov), f"{name}: --method polyhedral volume {v} vs OpenSCAD's STL {ov}"

@@ -1,6 +1,6 @@
 //! A solid tree as a [`Polyhedral`] solid, where every leaf is a polyhedron (a box, a mesh
-//! solid: `polyhedron`, `mesh`, `prism`, `dual`, `subdivide`) under affine transforms, Booleans
-//! and colours. Post-order over an explicit stack: any depth is safe.
+//! solid: `polyhedron`, `mesh`, `prism`, `dual`, `subdivide`; a height field of flat quads,
+//! OpenSCAD's `surface`) under affine transforms, Booleans and colours. Post-order over an explicit stack: any depth is safe.
 
 use super::{Polyhedral, PolyhedralError, difference, intersection_all, union_all};
 use solidkit_kernel::NodeKind;
@@ -24,6 +24,13 @@ fn leaf(p: &Primitive) -> Result<Polyhedral, NotPolyhedral> {
     match p {
         Primitive::Cuboid(c) => Ok(Polyhedral::cuboid(-c.size / 2.0, c.size)?),
         Primitive::Mesh(m) => Ok(Polyhedral::from_mesh(&m.to_indexed())?),
+        // OpenSCAD's `surface()`: flat triangles, so exactly a polyhedron.
+        Primitive::HeightField(h) => match h.quad_mesh() {
+            Some((v, t)) => Ok(Polyhedral::from_mesh(&solidkit_kernel::IndexedMesh::new(
+                v, t,
+            ))?),
+            None => Err(NotPolyhedral::Node(p.name().to_string())),
+        },
         other => Err(NotPolyhedral::Node(other.name().to_string())),
     }
 }

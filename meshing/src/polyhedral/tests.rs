@@ -3,6 +3,8 @@
 
 use super::*;
 use crate::{ReportOptions, TopologyReport};
+use glam::DVec2;
+use solidkit_kernel::Solid;
 
 fn cuboid(lo: DVec3, size: DVec3) -> Polyhedral {
     Polyhedral::cuboid(lo, size).expect("a box")
@@ -150,4 +152,36 @@ fn a_shadow_is_the_union_of_the_parts_outlines() {
     assert!((got - 4.0).abs() < 1e-7, "{got}");
     let far = a.transform(&DAffine3::from_translation(DVec3::new(1e12, 0.0, 0.0)));
     assert!(far.shadow().is_err() && far.section_at_zero().is_err());
+}
+
+#[test]
+fn a_height_field_of_flat_quads_is_its_polyhedron() {
+    use solidkit_kernel::primitive::Primitive;
+    use solidkit_kernel::primitive::heightfield::{
+        HeightField, HeightGrid, HeightSource, Interpolation,
+    };
+    // 2 × 2 samples (one cell), heights 0 0 / 0 4 over the unit square, base -1: a unit slab
+    // below z = 0 and four triangles around the centre (height 1) with mean heights 1/3, 5/3,
+    // 5/3, 1/3 above it.
+    let grid = HeightGrid::new(2, 2, vec![0.0, 0.0, 0.0, 4.0]).expect("grid");
+    let source = |interpolation| HeightSource::Samples {
+        grid: grid.clone(),
+        interpolation,
+    };
+    let field = |i| HeightField::new(DVec2::ZERO, DVec2::ONE, -1.0, source(i)).expect("field");
+    let quads = Solid::primitive(Primitive::HeightField(std::sync::Arc::new(field(
+        Interpolation::Quads,
+    ))));
+    let p = from_solid(&quads).expect("polyhedral");
+    assert_solid(
+        &report(&p),
+        1,
+        0,
+        1.0 + 0.25 * (1.0 + 5.0 + 5.0 + 1.0) / 3.0,
+    );
+    // Bilinear cells are curved: no polyhedral form.
+    let curved = Solid::primitive(Primitive::HeightField(std::sync::Arc::new(field(
+        Interpolation::Bilinear,
+    ))));
+    assert!(from_solid(&curved).is_err());
 }

@@ -4,9 +4,10 @@
 //! primitives are OpenSCAD's faceted ones here whatever `--facets` says; extrusions are its
 //! slices (`sliced.rs`) of the 2D region's polygons (`region.rs`), turns its straight steps
 //! (`turned.rs`); `hull` and `minkowski` take the convex pieces the field track found, and
-//! imported meshes and polyhedra their own triangles. A statement with no polyhedral form
-//! (`surface`, `resize`, a wedge extruded to a segment) says which and where, and the caller
-//! meshes the field instead.
+//! imported meshes, polyhedra and `surface` their own triangles, `resize` the polyhedron's box,
+//! `projection` the polyhedron's section or shadow. A statement with no polyhedral form (a wedge
+//! extruded to a segment, a `hull` of operands the field track cannot enumerate) says which and
+//! where, and the caller meshes the field instead.
 
 use super::facets;
 use super::flat::Flat;

@@ -124,59 +124,15 @@ mod tests {
     /// A polyhedron: vertices and faces counter-clockwise seen from outside.
     type Mesh = (Vec<DVec3>, Vec<Vec<u32>>);
 
-    /// OpenSCAD's surface mesh of `rows` (at least 2 × 2): vertices and triangles counter-clockwise
-    /// seen from outside.
+    /// OpenSCAD's surface mesh of `rows` (at least 2 × 2): the kernel's polyhedron of the height
+    /// field (`HeightField::quad_mesh`), vertices and triangles counter-clockwise seen from
+    /// outside; the tests below check it against hand-computed volumes and the field.
     pub(super) fn mesh(rows: &[Vec<f64>], center: bool) -> Mesh {
-        let (ny, nx) = (rows.len(), rows[0].len());
-        let (ox, oy) = if center {
-            (-(nx as f64 - 1.0) / 2.0, -(ny as f64 - 1.0) / 2.0)
-        } else {
-            (0.0, 0.0)
-        };
-        let bottom = rows.iter().flatten().fold(0.0f64, |m, &v| m.min(v - 1.0));
-        let mut v: Vec<DVec3> = Vec::with_capacity(nx * ny * 2);
-        for (i, row) in rows.iter().enumerate() {
-            for (j, &h) in row.iter().enumerate() {
-                v.push(DVec3::new(ox + j as f64, oy + i as f64, h));
-            }
-        }
-        let top = |i: usize, j: usize| (i * nx + j) as u32;
-        let mut f: Vec<Vec<u32>> = Vec::with_capacity(4 * nx * ny + 4 * (nx + ny));
-        for i in 1..ny {
-            for j in 1..nx {
-                let (a, b, d, e) = (top(i - 1, j - 1), top(i - 1, j), top(i, j), top(i, j - 1));
-                let mean =
-                    (rows[i - 1][j - 1] + rows[i - 1][j] + rows[i][j - 1] + rows[i][j]) / 4.0;
-                let c = v.len() as u32;
-                v.push(DVec3::new(ox + j as f64 - 0.5, oy + i as f64 - 0.5, mean));
-                f.extend([vec![c, a, b], vec![c, b, d], vec![c, d, e], vec![c, e, a]]);
-            }
-        }
-        // The border, counter-clockwise seen from above.
-        let mut border: Vec<(usize, usize)> = (0..nx).map(|j| (0, j)).collect();
-        border.extend((1..ny).map(|i| (i, nx - 1)));
-        border.extend((0..nx - 1).rev().map(|j| (ny - 1, j)));
-        border.extend((1..ny - 1).rev().map(|i| (i, 0)));
-        let base = v.len() as u32;
-        v.extend(
-            border
-                .iter()
-                .map(|&(i, j)| DVec3::new(ox + j as f64, oy + i as f64, bottom)),
-        );
-        let middle = v.len() as u32;
-        v.push(DVec3::new(
-            ox + (nx as f64 - 1.0) / 2.0,
-            oy + (ny as f64 - 1.0) / 2.0,
-            bottom,
-        ));
-        let n = border.len();
-        for k in 0..n {
-            let (p, q) = (border[k], border[(k + 1) % n]);
-            let (tp, tq) = (top(p.0, p.1), top(q.0, q.1));
-            let (bp, bq) = (base + k as u32, base + ((k + 1) % n) as u32);
-            f.extend([vec![bp, bq, tq], vec![bp, tq, tp], vec![middle, bq, bp]]);
-        }
-        (v, f)
+        let (v, t) = height_field(rows, center)
+            .unwrap()
+            .quad_mesh()
+            .expect("quads above the base");
+        (v, t.into_iter().map(|t| t.to_vec()).collect())
     }
 
     /// Volume of a closed triangle mesh.

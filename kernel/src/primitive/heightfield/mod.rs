@@ -17,6 +17,7 @@ mod error;
 mod grid;
 mod param;
 mod png_map;
+mod quad_mesh;
 mod sampled;
 mod source;
 
@@ -26,6 +27,7 @@ pub use grid::HeightGrid;
 pub use png_map::{
     MAX_PNG_DECODER_BYTES, MAX_PNG_PIXELS, MAX_PNG_SIDE, decode_png, decode_png_luminance, load_png,
 };
+pub use quad_mesh::QuadMesh;
 pub use source::{HeightSource, Interpolation};
 
 use super::{Cuboid, PrimitiveError, Shape};
