@@ -295,3 +295,42 @@ fn cut_faces_are_the_cutters_even_where_a_buried_part_touches_them() {
     }
     assert!(counts.iter().all(|&n| n > 200), "{counts:?}");
 }
+
+#[test]
+fn polyhedral_meshes_carry_the_parts_colours() {
+    // The same model as exact polyhedra (OpenSCAD's 21-gon sphere): faces on the cube's planes
+    // are red, the sphere's cut faces inside the cube blue, the small cube above green.
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("c.ply");
+    let r = mesh_to(
+        &fixture("csg/colors.csg"),
+        &out,
+        &["--method", "polyhedral"],
+    );
+    assert_eq!(
+        (r["method"].as_str(), r["colors"].as_u64()),
+        (Some("polyhedral"), Some(3)),
+        "{r}"
+    );
+    let (mesh, colors) = ply_colors(&std::fs::read(&out).unwrap());
+    let mut counts = [0; 3];
+    for (t, tri) in mesh.triangles.iter().enumerate() {
+        let c = tri
+            .iter()
+            .map(|&i| mesh.positions[i as usize])
+            .sum::<DVec3>()
+            / 3.0;
+        let (big, side) = (c.abs().max_element(), c.x.abs().max(c.y.abs()));
+        if c.z > 5.0 + 1e-6 {
+            assert_eq!(colors[t], [0, 255, 0, 255], "small cube at {c}");
+            counts[2] += 1;
+        } else if big < 5.0 - 1e-6 {
+            assert_eq!(colors[t], [0, 0, 255, 255], "sphere cut at {c}");
+            counts[1] += 1;
+        } else if side < 3.4 || c.z < 4.9 {
+            assert_eq!(colors[t], [255, 0, 0, 255], "cube face at {c}");
+            counts[0] += 1;
+        }
+    }
+    assert!(counts.iter().all(|&n| n > 0), "{counts:?}");
+}

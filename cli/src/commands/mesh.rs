@@ -117,19 +117,9 @@ pub fn run(a: &MeshArgs) -> Result<u8> {
     } else {
         meshed.face_colors(&solid)
     };
-    // Single-precision formats can fold distinct vertices together: say so, with the remedy.
-    if let Some(out) = a.output.as_deref()
-        && MeshFormat::from_path(out).is_ok_and(is_single_precision)
-    {
-        let n = single_precision_collisions(mesh);
-        if n > 0 {
-            let w = format!(
-                "{input}: {n} vertices fall on another vertex when rounded to the 32-bit floats of {}: read back, triangles there are degenerate or edges non-manifold (.ply, .obj, .off and .3mf keep double precision)",
-                out.display()
-            );
-            crate::output::errln!("warning: {}", crate::escape::one_line(&w));
-            warnings.push(w);
-        }
+    if let Some(w) = single_precision_warning(a, mesh) {
+        crate::output::errln!("warning: {}", crate::escape::one_line(&w));
+        warnings.push(w);
     }
     let write = |out: &std::path::Path| {
         write_colored_mesh_with(out, mesh, colors.as_ref(), &WriteOptions::default())
@@ -203,4 +193,24 @@ pub(super) fn write_preview(
     let cam = Camera::framing(View::Iso, &frame, size)?;
     png_out::write_png(path, &raster::render_mesh(mesh, &cam, shade::SOLID))?;
     Ok(())
+}
+
+/// Single-precision formats can fold distinct vertices together: the warning that says so, with
+/// the remedy, when the output file is one and the mesh has such vertices.
+pub(super) fn single_precision_warning(
+    a: &MeshArgs,
+    mesh: &solidkit_meshing::IndexedMesh,
+) -> Option<String> {
+    let out = a.output.as_deref()?;
+    if !MeshFormat::from_path(out).is_ok_and(is_single_precision) {
+        return None;
+    }
+    let n = single_precision_collisions(mesh);
+    (n > 0).then(|| {
+        format!(
+            "{}: {n} vertices fall on another vertex when rounded to the 32-bit floats of {}: read back, triangles there are degenerate or edges non-manifold (.ply, .obj, .off and .3mf keep double precision)",
+            a.input.display(),
+            out.display()
+        )
+    })
 }

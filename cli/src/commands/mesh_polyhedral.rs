@@ -50,22 +50,27 @@ pub fn finish(
         .output
         .as_deref()
         .is_some_and(|out| MeshFormat::from_path(out).is_ok_and(MeshFormat::carries_colors));
-    let mut more: Vec<String> = warnings::empty(&r)
+    let more = warnings::empty(&r)
         .or_else(|| warnings::not_closed_manifold(&r))
-        .map(|w| format!("{input}: {w}"))
-        .into_iter()
-        .collect();
-    if carries && !a.no_colors && solid.has_color() {
-        more.push(format!(
-            "{input}: colours are not carried by --method polyhedral: the mesh is written without them"
-        ));
-    }
+        .map(|w| format!("{input}: {w}"));
     found.extend(more);
+    found.extend(super::mesh::single_precision_warning(a, &mesh));
+    // Each triangle takes the colour of the part its face comes from, traced through the tree's
+    // Booleans as on the grid path; the faces lie on the parts' own faces, so the parts' boxes
+    // need only a hair of margin.
+    let colors = if carries && !a.no_colors {
+        let [lo, hi] = r.bbox.map(glam::DVec3::from_array);
+        let diagonal = if r.faces > 0 { (hi - lo).length() } else { 0.0 };
+        solidkit_meshing::colors::assign(solid, &mesh, 1e-6 * diagonal + 1e-12)
+    } else {
+        None
+    };
     for w in &found {
         crate::output::errln!("warning: {}", crate::escape::one_line(w));
     }
-    let write =
-        |out: &std::path::Path| write_colored_mesh_with(out, &mesh, None, &WriteOptions::default());
+    let write = |out: &std::path::Path| {
+        write_colored_mesh_with(out, &mesh, colors.as_ref(), &WriteOptions::default())
+    };
     if a.json {
         if let Some(out) = &a.output {
             write(out)?;
@@ -75,7 +80,7 @@ pub fn finish(
             ("report_time_s", json!(report_s)),
             ("method", json!("polyhedral")),
             ("warnings", json!(found)),
-            ("colors", json!(0)),
+            ("colors", json!(colors.as_ref().map_or(0, |c| c.used()))),
         ];
         outln!("{}", report::to_json(&r, &extra)?)?;
     } else {
