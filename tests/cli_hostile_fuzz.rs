@@ -2,7 +2,8 @@
 //! trees with extreme parameters (huge and tiny sizes, near-zero and subnormal radii, deep
 //! nesting, huge translations, degenerate transforms, unbounded solids under huge or tiny
 //! `--bounds`, open mesh operands), each meshed by the real binary with marching cubes or dual
-//! contouring at a small resolution.
+//! contouring at a small resolution, or by polyhedral Booleans (where `--bounds` is refused with
+//! exit 2, and a tree with a part that is not a polyhedron falls back to marching cubes).
 //!
 //! Every run must end with exit 0 or 2, or 1 with its warning that the mesh is empty (never a
 //! panic, an abort, a signal or a hang); an error ends with one `error:` line; a failed run leaves
@@ -312,9 +313,11 @@ fn tree(r: &mut Rng, budget: usize) -> String {
 
 /// The command line of one run (after `mesh TREE -o OUT`).
 fn options(r: &mut Rng) -> Vec<String> {
+    let grid = ["mc", "dc"][usize::from(r.chance(0.3))];
+    let method = if r.chance(0.25) { "polyhedral" } else { grid };
     let mut args = vec![
         "--method".to_string(),
-        ["mc", "dc"][usize::from(r.chance(0.3))].to_string(),
+        method.to_string(),
         "--resolution".to_string(),
         (8 + r.below(28)).to_string(),
         "--no-progress".to_string(),

@@ -50,7 +50,12 @@ pub fn finish(
         .output
         .as_deref()
         .is_some_and(|out| MeshFormat::from_path(out).is_ok_and(MeshFormat::carries_colors));
-    let more = warnings::empty(&r)
+    // The grid's empty-mesh warning speaks of sampling; an exact Boolean result is simply empty.
+    let empty = (r.faces == 0).then(|| {
+        "the mesh is empty: the polyhedral Booleans leave nothing (every part is cut away, or none is 3D)"
+            .to_string()
+    });
+    let more = empty
         .or_else(|| warnings::not_closed_manifold(&r))
         .map(|w| format!("{input}: {w}"));
     found.extend(more);
