@@ -161,6 +161,22 @@ fn missing_import_files_are_empty_with_a_warning() {
             "{w}"
         );
     }
+    // `surface` too (OpenSCAD: "Can't open DAT file", nothing rendered for it).
+    let (v, r) = volume_of(&[("model.csg", "cube(1);\nsurface(file = \"gone.dat\");")]);
+    assert_close(v, 1.0, 0.01);
+    let w = r["warnings"].to_string();
+    assert!(
+        w.contains("model.csg:2:1:") && w.contains("the surface is empty"),
+        "{w}"
+    );
+    // A model with nothing else is empty, and the error says what was skipped.
+    let (_dir, o) = mesh(&[("model.csg", "surface(file = \"gone.dat\");")]);
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert_eq!(o.status.code(), Some(2), "{err}");
+    assert!(
+        err.contains("the model is empty") && err.contains("gone.dat"),
+        "{err}"
+    );
 }
 
 #[test]

@@ -43,25 +43,26 @@ def _triangulate(polys):
 
 
 def read_off(path) -> tuple:
-    words = []
+    """An OFF file: one vertex per line, one face per line (its corner count, its corners and
+    optionally a colour, which is ignored)."""
+    lines = []
     for line in Path(path).read_text().splitlines():
-        line = line.split("#", 1)[0]
-        words.extend(line.split())
-    if not words or not words[0].startswith("OFF"):
+        words = line.split("#", 1)[0].split()
+        if words:
+            lines.append(words)
+    if not lines or not lines[0][0].startswith("OFF"):
         raise ValueError(f"{path}: not an OFF file")
-    rest = words[0][3:]
+    head = lines[0][0][3:]
+    rest = ([head] if head else []) + lines[0][1:]
     pos = 1
-    if rest:  # "OFF" glued to the counts is not standard; be lenient
-        words.insert(1, rest)
-    nv, nf = int(words[pos]), int(words[pos + 1])
-    pos += 3
-    verts = np.array(words[pos:pos + 3 * nv], dtype=np.float64).reshape(nv, 3)
-    pos += 3 * nv
+    if not rest:  # the counts on their own line, as usual
+        rest, pos = lines[1], 2
+    nv, nf = int(rest[0]), int(rest[1])
+    verts = np.array([w[:3] for w in lines[pos:pos + nv]], dtype=np.float64).reshape(nv, 3)
     polys = []
-    for _ in range(nf):
-        k = int(words[pos])
-        polys.append([int(w) for w in words[pos + 1:pos + 1 + k]])
-        pos += 1 + k
+    for words in lines[pos + nv:pos + nv + nf]:
+        k = int(words[0])
+        polys.append([int(w) for w in words[1:1 + k]])
     if all(len(p) == 3 for p in polys):
         return verts, np.array(polys, dtype=np.int64).reshape(-1, 3)
     return verts, _triangulate(polys)

@@ -5,7 +5,7 @@ Per example, in a private folder that mirrors the example's own (its data files 
 since `.csg` exports name them relative to the model):
 1. `openscad -o X.csg` (the export solidkit reads) and `openscad -o X.stl` (OpenSCAD's own CGAL
    render, timed, with a per-file time limit);
-2. `solidkit --threads 1 mesh X.csg --method polyhedral -o X-solidkit.stl --json` (timed; a part
+2. `solidkit --threads 1 mesh X.csg --method polyhedral -o solidkit.off --json` (timed; a part
    with no polyhedral form is meshed by marching cubes instead, and the table says so);
 3. both meshes measured by the same numpy code (xcheck.measure), and their Hausdorff distance by
    `solidkit compare`.
@@ -125,7 +125,10 @@ def run_one(name: str, scad: Path, out: Path, solidkit: Path, options: dict) -> 
     for data in scad.parent.iterdir():
         if data.is_file() and data.suffix not in (".scad", ".json"):
             shutil.copy(data, work / data.name)
-    csg, stl, mine = work / f"{name}.csg", work / "openscad.stl", work / "solidkit.stl"
+    # solidkit writes OFF (double precision, indexed): as an STL, vertices of touching parts or
+    # 1e-8 apart would be welded by the 32-bit rounding, which is the file format's loss, not the
+    # mesh's (solidkit warns when it writes such an STL).
+    csg, stl, mine = work / f"{name}.csg", work / "openscad.stl", work / "solidkit.off"
     res = {"name": name, "source": str(scad)}
     rc, _, err, _ = _run(["openscad", "-o", str(csg), str(scad)], cwd=scad.parent, limit=60)
     if rc != 0:
@@ -155,7 +158,7 @@ def run_one(name: str, scad: Path, out: Path, solidkit: Path, options: dict) -> 
         except json.JSONDecodeError:
             pass
         if mine.exists():
-            res["solidkit"] = measure.measure(*meshio.read_stl(mine))
+            res["solidkit"] = measure.measure(*meshio.read_mesh(mine))
     if res["openscad_status"] == "rendered":
         res["openscad"] = measure.measure(*meshio.read_stl(stl))
         if rc == 0 and mine.exists():
@@ -226,7 +229,7 @@ def _prune(res: dict, out: Path) -> dict:
     """The meshes of an example that agreed (or has none to compare) deleted once measured,
     unless paths.keep_meshes(): the disagreements keep theirs for a look."""
     if res.get("verdict") != "differ" and not paths.keep_meshes():
-        for mesh in ("openscad.stl", "solidkit.stl"):
+        for mesh in ("openscad.stl", "solidkit.off"):
             (out / res["name"] / mesh).unlink(missing_ok=True)
     return res
 

@@ -164,7 +164,14 @@ pub fn convert_with(
     };
     let solid = match group(&root, top, Op2::Union, &mut ctx)? {
         Geom::Solid(s) => s,
-        Geom::Empty => return Err(CsgError::Empty),
+        Geom::Empty => {
+            let skipped = match ctx.warnings.as_slice() {
+                [] => String::new(),
+                [one] => format!("; skipped: {one}"),
+                [first, rest @ ..] => format!("; skipped: {first} (and {} more)", rest.len()),
+            };
+            return Err(CsgError::Empty(skipped));
+        }
         Geom::Flat(_) => return Err(CsgError::Flat),
     };
     Ok((solid, ctx.warnings, track))
@@ -613,10 +620,15 @@ fn node(
             let path = string_arg(stmt, "file", Some(0))
                 .filter(|p| !p.is_empty())
                 .ok_or_else(|| stmt.error("'file': expected a file name"))?;
-            let bytes = ctx
-                .files
-                .read_file(path)
-                .map_err(|e| stmt.error(e.to_string()))?;
+            let bytes = match ctx.files.read_file(path) {
+                Ok(b) => b,
+                // OpenSCAD warns about a file it cannot open and renders nothing for it.
+                Err(e) if super::import::missing(&e) => {
+                    ctx.warn(stmt, format!("{e}: the surface is empty"));
+                    return leaf(Geom::Empty);
+                }
+                Err(e) => return Err(stmt.error(e.to_string())),
+            };
             match surface(stmt, path, &bytes)? {
                 Some(s) => leaf(Geom::Solid(s)),
                 None => {

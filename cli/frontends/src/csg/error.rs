@@ -48,9 +48,10 @@ pub enum CsgError {
         /// What was wrong.
         message: String,
     },
-    /// The model has no geometry at all.
-    #[error("1:1: the model is empty (no geometry)")]
-    Empty,
+    /// The model has no geometry at all; the text is empty or names what was skipped on the way
+    /// (`"; skipped: ..."`, from the warnings), so that the error says why.
+    #[error("1:1: the model is empty (no geometry){0}")]
+    Empty(String),
     /// The model's top-level object is 2D: as OpenSCAD, which writes it only to 2D formats, no
     /// solid.
     #[error(

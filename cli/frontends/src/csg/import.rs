@@ -35,7 +35,7 @@ pub fn string_arg<'a>(stmt: &'a Stmt, name: &str, position: Option<usize>) -> Op
 
 /// True when a resolver's error is a file that does not exist (not one refused by the
 /// confinement rules, unreadable or malformed: those stay errors).
-fn missing(error: &ResolveError) -> bool {
+pub(super) fn missing(error: &ResolveError) -> bool {
     let io = match error.inner().downcast_ref::<MeshIoError>() {
         Some(MeshIoError::File(FileError::Io { source, .. }) | MeshIoError::Io { source, .. }) => {
             Some(source)

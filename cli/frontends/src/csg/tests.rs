@@ -176,7 +176,7 @@ fn non_finite_and_undef_values_are_skipped_with_warnings() {
     // Everything skipped: the model is empty, an error.
     assert!(matches!(
         import("cube(size = inf);", Facets::Exact),
-        Err(CsgError::Empty)
+        Err(CsgError::Empty(_))
     ));
 }
 
@@ -571,7 +571,7 @@ fn named_positional_and_values() {
     assert_eq!(c, Solid::sphere(2.0));
     assert!(matches!(
         import("group();", Facets::Exact),
-        Err(CsgError::Empty)
+        Err(CsgError::Empty(_))
     ));
 }
 
