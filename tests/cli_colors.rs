@@ -107,15 +107,19 @@ fn ply_colors(bytes: &[u8]) -> (IndexedMesh, Vec<[u8; 4]>) {
     (IndexedMesh::new(positions, tris), colors)
 }
 
+/// The centroid of a triangle of `mesh`.
+fn centroid(mesh: &IndexedMesh, tri: &[u32; 3]) -> DVec3 {
+    tri.iter()
+        .map(|&i| mesh.positions[i as usize])
+        .sum::<DVec3>()
+        / 3.0
+}
+
 /// Every triangle on a cube face red, on the sphere blue, on the small cube green.
 fn check(mesh: &IndexedMesh, color: impl Fn(usize) -> [u8; 4]) {
     let mut counts = [0; 3];
     for (t, tri) in mesh.triangles.iter().enumerate() {
-        let c = tri
-            .iter()
-            .map(|&i| mesh.positions[i as usize])
-            .sum::<DVec3>()
-            / 3.0;
+        let c = centroid(mesh, tri);
         if c.z > 5.2 {
             // the small cube (its concave seam with the big one is left out)
             assert_eq!(color(t), [0, 255, 0, 255], "small cube at {c}");
@@ -276,11 +280,7 @@ fn cut_faces_are_the_cutters_even_where_a_buried_part_touches_them() {
     let (mesh, colors) = ply_colors(&std::fs::read(&out).unwrap());
     let mut counts = [0; 3];
     for (t, tri) in mesh.triangles.iter().enumerate() {
-        let c = tri
-            .iter()
-            .map(|&i| mesh.positions[i as usize])
-            .sum::<DVec3>()
-            / 3.0;
+        let c = centroid(&mesh, tri);
         let m = c.x.abs().max(c.y.abs());
         if (c.z - 3.0).abs() < 1e-3 && m < 1.8 {
             assert_eq!(colors[t], [0, 0, 255, 255], "floor at {c}");
@@ -315,11 +315,7 @@ fn polyhedral_meshes_carry_the_parts_colours() {
     let (mesh, colors) = ply_colors(&std::fs::read(&out).unwrap());
     let mut counts = [0; 3];
     for (t, tri) in mesh.triangles.iter().enumerate() {
-        let c = tri
-            .iter()
-            .map(|&i| mesh.positions[i as usize])
-            .sum::<DVec3>()
-            / 3.0;
+        let c = centroid(&mesh, tri);
         let (big, side) = (c.abs().max_element(), c.x.abs().max(c.y.abs()));
         if c.z > 5.0 + 1e-6 {
             assert_eq!(colors[t], [0, 255, 0, 255], "small cube at {c}");
