@@ -100,17 +100,59 @@ fn json_trees_of_polyhedra_and_the_fallback() {
     let (o, r) = polyhedral("t.json", tree, &[]);
     assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
     assert!((r.expect("JSON")["volume"].as_f64().unwrap() - 7.0).abs() < 1e-12);
-    // A sphere has no polyhedral form: marching cubes instead, and a warning that says so.
-    let round = r#"{"format":"solidkit-tree","version":1,"root":{"type":"sphere","radius":1}}"#;
+    // A sphere has no polyhedral form: it alone is meshed on a grid of its own box (128 cells
+    // by default, --resolution) and cut from the box exactly; a warning names it. The sphere
+    // pokes through all six faces: genus 5.
+    let round = r#"{"format":"solidkit-tree","version":1,"root":{"type":"difference","children":[
+        {"type":"box","size":[2,2,2]},{"type":"sphere","radius":1.2}]}}"#;
     let (o, r) = polyhedral("s.json", round, &[]);
     assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
     let r = r.expect("JSON");
     let w = r["warnings"].to_string();
     assert!(
-        w.contains("`sphere` is not a polyhedron") && w.contains("marching cubes"),
+        w.contains("`sphere` is not a polyhedron") && w.contains("grid of 128 cells"),
         "{w}"
     );
-    assert_eq!(r["method"], "mc");
+    assert_eq!(r["method"], "polyhedral");
+    assert_eq!(
+        (r["shells"].as_u64(), r["genus"].as_i64()),
+        (Some(1), Some(5)),
+        "{r}"
+    );
+    let cap = std::f64::consts::PI * 0.04 * (3.6 - 0.2) / 3.0;
+    let exact = 8.0 - (4.0 / 3.0 * std::f64::consts::PI * 1.728 - 6.0 * cap);
+    let v = r["volume"].as_f64().unwrap();
+    assert!((v - exact).abs() < 2e-3 * exact, "{v} vs {exact}");
+    // The box's faces are exact: its corners are vertices of the mesh.
+    assert_eq!(
+        r["bbox"],
+        serde_json::json!([[-1.0, -1.0, -1.0], [1.0, 1.0, 1.0]]),
+        "{r}"
+    );
+}
+
+#[test]
+fn a_wedge_extruded_to_a_segment_is_gridded_alone() {
+    // linear_extrude with scale [1, 0] ends in a segment: no polyhedron of OpenSCAD's slices.
+    // It is meshed on its own grid and united exactly with the cube (overlap 5/6).
+    let csg = "linear_extrude(height = 3, scale = [1, 0]) square(2, center = true);\ncube(1);";
+    let (o, r) = polyhedral("m.csg", csg, &[]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let r = r.expect("JSON");
+    assert_eq!(r["method"], "polyhedral", "{r}");
+    let w = r["warnings"].to_string();
+    assert!(
+        w.contains("m.csg:1:1:") && w.contains("grid of 128 cells"),
+        "{w}"
+    );
+    let v = r["volume"].as_f64().unwrap();
+    let exact = 6.0 + 1.0 - 5.0 / 6.0;
+    assert!((v - exact).abs() < 5e-3 * exact, "{v} vs {exact}");
+    assert_eq!(
+        (r["shells"].as_u64(), r["closed"].as_bool()),
+        (Some(1), Some(true)),
+        "{r}"
+    );
 }
 
 #[test]

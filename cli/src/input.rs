@@ -30,22 +30,25 @@ pub fn load_solid_warned(
     allow: &[PathBuf],
     defines: &[String],
 ) -> Result<(Solid, Vec<String>)> {
-    load_solid_polyhedral(path, facets, allow, defines, false).map(|(s, w, _)| (s, w))
+    load_solid_polyhedral(path, facets, allow, defines, None).map(|(s, w, _)| (s, w))
 }
 
 /// The model's polyhedron (when asked for), or why it has none.
 pub type MaybePolyhedron = Option<Result<Polyhedral, String>>;
 
-/// [`load_solid_warned`], and with `polyhedral` the model's polyhedron or why it has none.
+/// [`load_solid_warned`], and with `polyhedral` the model's polyhedron or why it has none: its
+/// parts with no polyhedral form meshed on a grid of that many cells along their own longest
+/// sides.
 pub fn load_solid_polyhedral(
     path: &Path,
     facets: Facets,
     allow: &[PathBuf],
     defines: &[String],
-    polyhedral: bool,
+    polyhedral: Option<usize>,
 ) -> Result<(Solid, Vec<String>, MaybePolyhedron)> {
     let mut options = LoadOptions::default();
-    options.polyhedral = polyhedral;
+    options.polyhedral = polyhedral.is_some();
+    options.part_grid = polyhedral;
     options.facets = facets;
     options.allow = allow.to_vec();
     options.defines = defines.to_vec();

@@ -95,6 +95,7 @@ def test_polyhedral_agrees_with_openscad(name, exported):
     rep = got["reports"]["polyhedral"]
     own, m, os_ = rep["own"], rep["measured"], got["openscad"]
     assert own["method"] == "polyhedral", f"{name}: fell back to the grid: {rep['stderr'][-300:]}"
+    assert "meshed on a grid of" not in rep["stderr"], f"{name}: a part was gridded: {rep['stderr'][-300:]}"
     assert m["closed"] and m["manifold"], f"{name} --method polyhedral: STL measures {m}"
     if os_["closed"] and os_["manifold"]:
         assert (m["shells"], m["genus"]) == (os_["shells"], os_["genus"]), (

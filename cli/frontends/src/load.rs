@@ -15,7 +15,7 @@ use crate::rhai::{self, ScriptError, ScriptOptions};
 use solidkit_kernel::files::{DEFAULT_MAX_FILE_BYTES, FileAccess, FileError, read_regular_file};
 use solidkit_kernel::{KernelError, Solid, json};
 use solidkit_meshing::io::FileMeshResolver;
-use solidkit_meshing::polyhedral::{Polyhedral, from_solid};
+use solidkit_meshing::polyhedral::{Polyhedral, from_solid_gridding};
 use std::path::{Path, PathBuf};
 use std::sync::Arc;
 
@@ -85,6 +85,11 @@ pub struct LoadOptions {
     /// and `.scad` files from OpenSCAD's faceted parts (the solid is then built with
     /// [`Facets::OpenScad`] too), for trees and scripts where every leaf is a polyhedron.
     pub polyhedral: bool,
+    /// With [`LoadOptions::polyhedral`]: a part with no polyhedral form (a sphere in a tree, a
+    /// wedge extruded to a segment) is meshed by marching cubes with this many cells along its
+    /// own longest side and combined exactly with the rest, with a warning; `None` (the
+    /// default): the model has no polyhedron then, and [`Loaded::polyhedron`] says why.
+    pub part_grid: Option<usize>,
 }
 
 impl Default for LoadOptions {
@@ -97,6 +102,7 @@ impl Default for LoadOptions {
             script: ScriptOptions::default(),
             defines: Vec::new(),
             polyhedral: false,
+            part_grid: None,
         }
     }
 }
@@ -302,10 +308,13 @@ fn load_text(
                 .map_err(LoadError::Script)?
         }
         Format::Csg if options.polyhedral => {
-            let got = csg::import_polyhedral(text, &resolver).map_err(|error| LoadError::Csg {
-                name: name.to_string(),
-                error,
-            })?;
+            let got =
+                csg::import_polyhedral(text, &resolver, options.part_grid).map_err(|error| {
+                    LoadError::Csg {
+                        name: name.to_string(),
+                        error,
+                    }
+                })?;
             warnings.extend(got.warnings.iter().map(|w| format!("{name}:{w}")));
             polyhedron = Some(got.polyhedron.map_err(|e| format!("{name}:{e}")));
             got.solid
@@ -331,7 +340,13 @@ fn load_text(
         error,
     })?;
     if options.polyhedral && polyhedron.is_none() {
-        polyhedron = Some(from_solid(&solid).map_err(|e| format!("{name}: {e}")));
+        polyhedron = Some(match from_solid_gridding(&solid, options.part_grid) {
+            Ok((p, w)) => {
+                warnings.extend(w.iter().map(|w| format!("{name}: {w}")));
+                Ok(p)
+            }
+            Err(e) => Err(format!("{name}: {e}")),
+        });
     }
     Ok(Loaded {
         solid,

@@ -237,8 +237,9 @@ pub struct MeshArgs {
     /// Polygonization method (default: mc; dc with --target-error). `polyhedral`: no grid,
     /// mesh Booleans of the model's polyhedra (OpenSCAD's faceted parts of a .csg/.scad model,
     /// implying --facets openscad; trees of polyhedra, boxes, transforms and Booleans), as
-    /// OpenSCAD and manifold3d build them; a model with a part that is not a polyhedron is
-    /// meshed by marching cubes instead, with a warning naming that part.
+    /// OpenSCAD and manifold3d build them; a part that is not a polyhedron is meshed alone by
+    /// marching cubes with --resolution cells along its own longest side and combined exactly
+    /// with the rest, with a warning naming it.
     #[arg(long, value_enum)]
     pub method: Option<MeshMethod>,
     /// Dual contouring only: collapse octree cells whose merged vertex stays within this

@@ -31,7 +31,8 @@ pub fn run(a: &MeshArgs) -> Result<u8> {
         a.facets.into(),
         &a.allow_path,
         &a.define,
-        polyhedral,
+        // A part with no polyhedral form: --resolution cells along its own longest side.
+        polyhedral.then_some(a.resolution),
     )?;
     match polyhedron {
         Some(Ok(p)) => return super::mesh_polyhedral::finish(a, &solid, &p, warnings, start),

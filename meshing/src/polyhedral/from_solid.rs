@@ -37,19 +37,58 @@ fn leaf(p: &Primitive) -> Result<Polyhedral, NotPolyhedral> {
 
 /// The tree as one polyhedral solid, or the first node that has no polyhedral form.
 pub fn from_solid(solid: &Solid) -> Result<Polyhedral, NotPolyhedral> {
+    from_solid_gridding(solid, None).map(|(p, _)| p)
+}
+
+/// The tree as one polyhedral solid; with `grid`, a node that has no polyhedral form (a leaf, or
+/// an operation that is not a Boolean, a transform or a colour) is meshed by marching cubes with
+/// that many cells along its own longest side ([`Polyhedral::gridded`]) instead of failing the
+/// tree, and named in the returned warnings (one per node, by its JSON name).
+pub fn from_solid_gridding(
+    solid: &Solid,
+    grid: Option<usize>,
+) -> Result<(Polyhedral, Vec<String>), NotPolyhedral> {
+    let mut warnings = Vec::new();
+    let mut gridded = |s: &Solid, name: &str| -> Result<Polyhedral, NotPolyhedral> {
+        let Some(resolution) = grid else {
+            return Err(NotPolyhedral::Node(name.to_string()));
+        };
+        let p = Polyhedral::gridded(s, resolution)?;
+        warnings.push(format!(
+            "`{name}` is not a polyhedron: meshed on a grid of {resolution} cells along its \
+             longest side, then combined exactly with the rest"
+        ));
+        Ok(p)
+    };
     // (node, children done); results stack up in post-order.
     let mut work: Vec<(&Solid, bool)> = vec![(solid, false)];
     let mut done: Vec<Polyhedral> = Vec::new();
     while let Some((s, expanded)) = work.pop() {
         let kids = s.children();
         if !expanded {
-            work.push((s, true));
-            work.extend(kids.iter().rev().map(|c| (c, false)));
+            let combines = matches!(
+                s.kind(),
+                NodeKind::Union
+                    | NodeKind::Color(_)
+                    | NodeKind::Intersection
+                    | NodeKind::Difference
+                    | NodeKind::Transform(_)
+            );
+            match s.kind() {
+                NodeKind::Primitive(p) => done.push(match leaf(p) {
+                    Err(NotPolyhedral::Node(name)) => gridded(s, &name)?,
+                    other => other?,
+                }),
+                _ if combines => {
+                    work.push((s, true));
+                    work.extend(kids.iter().rev().map(|c| (c, false)));
+                }
+                other => done.push(gridded(s, other.name())?),
+            }
             continue;
         }
         let parts = done.split_off(done.len() - kids.len());
         let p = match s.kind() {
-            NodeKind::Primitive(p) => leaf(p)?,
             NodeKind::Union | NodeKind::Color(_) => union_all(parts)?,
             NodeKind::Intersection => intersection_all(parts)?,
             NodeKind::Difference => {
@@ -62,5 +101,5 @@ pub fn from_solid(solid: &Solid) -> Result<Polyhedral, NotPolyhedral> {
         };
         done.push(p);
     }
-    Ok(done.pop().unwrap_or_else(Polyhedral::empty))
+    Ok((done.pop().unwrap_or_else(Polyhedral::empty), warnings))
 }

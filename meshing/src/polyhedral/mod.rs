@@ -13,10 +13,11 @@
 //! cube is 12 triangles.
 
 mod from_solid;
+mod gridded;
 mod reduce;
 mod sections;
 
-pub use from_solid::{NotPolyhedral, from_solid};
+pub use from_solid::{NotPolyhedral, from_solid, from_solid_gridding};
 pub use reduce::{difference, intersection_all, union_all};
 pub use sections::Loops;
 

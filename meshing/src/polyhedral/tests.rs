@@ -185,3 +185,24 @@ fn a_height_field_of_flat_quads_is_its_polyhedron() {
     ))));
     assert!(from_solid(&curved).is_err());
 }
+
+#[test]
+fn a_round_part_is_gridded_alone_when_asked() {
+    // A sphere has no polyhedral form: refused by default, meshed on its own grid on request
+    // (one warning naming it) and then cut from the box exactly.
+    let tree =
+        Solid::cuboid(DVec3::splat(2.0)).difference(&Solid::sphere(0.8).translate(DVec3::ONE));
+    assert!(from_solid(&tree).is_err());
+    let (p, warnings) = from_solid_gridding(&tree, Some(64)).expect("gridded");
+    assert_eq!(warnings.len(), 1, "{warnings:?}");
+    assert!(warnings[0].contains("`sphere`"), "{warnings:?}");
+    // One eighth of the ball is inside the box's corner.
+    let exact = 8.0 - std::f64::consts::PI * 0.512 / 6.0;
+    let r = report(&p);
+    assert!(r.closed && r.manifold, "{r:?}");
+    assert!(
+        (r.volume - exact).abs() < 1e-3 * exact,
+        "{} vs {exact}",
+        r.volume
+    );
+}

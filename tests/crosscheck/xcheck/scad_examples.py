@@ -38,10 +38,9 @@ EXAMPLES = Path(os.environ.get("SCAD_EXAMPLES_DIR", "/usr/share/openscad/example
 SETTINGS_FILE = paths.FIXTURES / "openscad_examples.json"
 # solidkit's settings for every example: polyhedral Booleans (OpenSCAD's own faceted polyhedra
 # combined exactly, as its CGAL render does, with no grid: a slit or sliver thinner than any cell
-# survives). A model with a part that has no polyhedral form (a wedge extruded to a segment) is
-# meshed by marching cubes instead, at 256 cells along the longest side (at the default 128 a cell
-# is 0.78 % of the longest side, more than the Hausdorff tolerance allows at sharp features), with
-# a warning; the table's method column says which examples did. No self-intersection count: the checks below measure the mesh.
+# survives). A part that has no polyhedral form (a wedge extruded to a segment) is meshed alone by
+# marching cubes at 256 cells along its own longest side and combined exactly with the rest, with
+# a warning; the table's method column says which examples had one. No self-intersection count: the checks below measure the mesh.
 ARGS = ["--method", "polyhedral", "--resolution", "256", "--refine", "1", "--no-self-intersections"]
 VOLUME_TOLERANCE = 0.01
 HAUSDORFF_TOLERANCE = 0.005
@@ -264,7 +263,8 @@ def method_of(res: dict) -> str:
     no polyhedral form (its warning says which)."""
     rep = res.get("solidkit_report") or {}
     if rep.get("method") == "polyhedral":
-        return "polyhedral"
+        gridded = "meshed on a grid of" in res.get("solidkit_stderr", "")
+        return "polyhedral (a part gridded)" if gridded else "polyhedral"
     if "meshed by marching cubes instead" in res.get("solidkit_stderr", ""):
         return "mc (fallback)"
     return str(rep.get("method", ""))

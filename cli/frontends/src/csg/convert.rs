@@ -24,6 +24,7 @@ use super::turned;
 use glam::{DVec2, DVec3};
 use solidkit_kernel::Solid;
 use solidkit_kernel::primitive::{Extrude, MeshResolver, Primitive, Revolve};
+use solidkit_meshing::polyhedral::Polyhedral;
 use std::sync::Arc;
 
 /// Converts the whole tree (top-level statements form an implicit group): statements marked `%`
@@ -34,16 +35,19 @@ pub fn convert(
     facets: Facets,
     files: &dyn MeshResolver,
 ) -> Result<(Solid, Vec<Warning>), CsgError> {
-    convert_with(tree, facets, files, false).map(|(s, w, _)| (s, w))
+    convert_with(tree, facets, files, false, None).map(|(s, w, _)| (s, w))
 }
 
 /// [`convert`], and with `polyhedral` also the model's polyhedron (`polyhedral.rs`) or the
-/// first statement that has none.
+/// first statement that has none. With `part_grid`, a statement with no polyhedral form is
+/// meshed on a grid of that many cells along its own longest side instead (with a warning), so
+/// only that part carries a grid's error.
 pub fn convert_with(
     tree: &Tree,
     facets: Facets,
     files: &dyn MeshResolver,
     polyhedral: bool,
+    part_grid: Option<usize>,
 ) -> Result<(Solid, Vec<Warning>, Option<Track>), CsgError> {
     let mut ctx = Ctx {
         facets,
@@ -141,8 +145,22 @@ pub fn convert_with(
             }
         };
         if polyhedral {
-            polys[i] =
+            let mut track =
                 polyhedral::track(stmt, &dims, kid_polys, flat.as_ref(), &geom, info.as_ref());
+            if let (Some(Err(why)), Some(cells), Geom::Solid(solid)) = (&track, part_grid, &geom)
+                && let Ok(p) = Polyhedral::gridded(solid, cells)
+            {
+                ctx.warn(
+                    stmt,
+                    format!(
+                        "{} has no polyhedral form: meshed on a grid of {cells} cells along its \
+                         longest side, then combined exactly with the rest",
+                        why.message
+                    ),
+                );
+                track = Some(Ok(p));
+            }
+            polys[i] = track;
         }
         results[i] = Some(geom);
         if hulled {

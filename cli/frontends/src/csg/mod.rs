@@ -156,13 +156,18 @@ pub struct PolyhedralImport {
     pub polyhedron: Result<solidkit_meshing::polyhedral::Polyhedral, NotPolyhedral>,
 }
 
-/// Imports `.csg` text with its polyhedron (see [`PolyhedralImport`]).
+/// Imports `.csg` text with its polyhedron (see [`PolyhedralImport`]); with `part_grid`, a
+/// statement with no polyhedral form is meshed on a grid of that many cells along its own
+/// longest side and combined exactly with the rest (a warning names it), instead of leaving the
+/// whole model without a polyhedron.
 pub fn import_polyhedral(
     text: &str,
     files: &dyn MeshResolver,
+    part_grid: Option<usize>,
 ) -> Result<PolyhedralImport, CsgError> {
     let tree = parser::parse(text)?;
-    let (solid, warnings, track) = convert::convert_with(&tree, Facets::OpenScad, files, true)?;
+    let (solid, warnings, track) =
+        convert::convert_with(&tree, Facets::OpenScad, files, true, part_grid)?;
     Ok(PolyhedralImport {
         solid,
         warnings,

@@ -7,7 +7,8 @@
 //! imported meshes, polyhedra and `surface` their own triangles, `resize` the polyhedron's box,
 //! `projection` the polyhedron's section or shadow. A statement with no polyhedral form (a wedge
 //! extruded to a segment, a `hull` of operands the field track cannot enumerate) says which and
-//! where, and the caller meshes the field instead.
+//! where; the conversion then meshes that statement's field alone on a grid (`convert_with`'s
+//! `part_grid`) or, without one, leaves the model without a polyhedron.
 
 use super::facets;
 use super::flat::Flat;
