@@ -37,7 +37,7 @@ pub struct PyMesh {
     mesh: IndexedMesh,
     warnings: Vec<String>,
     info: Value,
-    colors: Option<FaceColors>,
+    pub(crate) colors: Option<FaceColors>,
 }
 
 /// `v` as a read-only array.

@@ -7,9 +7,11 @@ use glam::DVec3;
 use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
 use solidkit_kernel::{Aabb, Solid};
+use solidkit_meshing::colors::assign;
 use solidkit_meshing::octree::{CancelToken, Progress};
 use solidkit_meshing::pipeline::limits::{MAX_RESOLUTION, default_max_memory};
 use solidkit_meshing::pipeline::{Domain, MeshOptions, Method, PipelineError, Prepared};
+use solidkit_meshing::polyhedral::{NotPolyhedral, from_solid_gridding};
 use solidkit_meshing::refine::RefineOptions;
 use std::sync::Arc;
 
@@ -17,7 +19,7 @@ use std::sync::Arc;
 pub struct MeshArgs<'a, 'py> {
     /// Cells along the longest side.
     pub resolution: usize,
-    /// `"mc"` or `"dc"` (default: `"dc"` with `target_error`, else `"mc"`).
+    /// `"mc"`, `"dc"` or `"polyhedral"` (default: `"dc"` with `target_error`, else `"mc"`).
     pub method: Option<&'a str>,
     /// Edge-collapse simplification within this distance (model units) after meshing.
     pub simplify: Option<f64>,
@@ -67,7 +69,7 @@ fn options(a: &MeshArgs<'_, '_>) -> PyResult<MeshOptions> {
         "dc" => Method::Dc,
         other => {
             return Err(PyValueError::new_err(format!(
-                "method must be 'mc' or 'dc', not {other:?}"
+                "method must be 'mc', 'dc' or 'polyhedral', not {other:?}"
             )));
         }
     };
@@ -120,6 +122,9 @@ pub fn mesh(
     loaded: &[String],
     a: MeshArgs<'_, '_>,
 ) -> PyResult<PyMesh> {
+    if a.method == Some("polyhedral") {
+        return polyhedral(py, solid, loaded, &a);
+    }
     let slot = Arc::new(ProgressSlot::default());
     let token = CancelToken::new();
     let mut options = options(&a)?.cancel(token.clone());
@@ -157,4 +162,54 @@ pub fn mesh(
         target_error: a.target_error,
     };
     PyMesh::from_meshed(py, meshed, colors, warnings, asked)
+}
+
+/// `method="polyhedral"`: the tree's polyhedra combined by mesh Booleans, no grid (the command
+/// line's `mesh --method polyhedral`); a part with no polyhedral form is meshed alone on a grid of
+/// `resolution` cells along its own longest side, with a warning.
+fn polyhedral(
+    py: Python<'_>,
+    solid: &Solid,
+    loaded: &[String],
+    a: &MeshArgs<'_, '_>,
+) -> PyResult<PyMesh> {
+    let grid_only = [
+        ("tolerance", a.tolerance.is_some()),
+        ("simplify", a.simplify.is_some()),
+        ("target_error", a.target_error.is_some()),
+        ("bounds", a.bounds.is_some()),
+    ];
+    if let Some((name, _)) = grid_only.iter().find(|(_, on)| *on) {
+        return Err(PyValueError::new_err(format!(
+            "{name} needs a grid: it does not go with method='polyhedral'"
+        )));
+    }
+    if !(1..=MAX_RESOLUTION).contains(&a.resolution) {
+        return Err(PyValueError::new_err(format!(
+            "resolution must be 1 to {MAX_RESOLUTION}, got {}",
+            a.resolution
+        )));
+    }
+    let resolution = a.resolution;
+    let (mesh, colors, found) = py
+        .detach(|| {
+            let (p, found) = from_solid_gridding(solid, Some(resolution))?;
+            let mesh = p.to_mesh();
+            let (lo, hi) = p.bounds().unwrap_or_default();
+            let colors = assign(solid, &mesh, 1e-6 * (hi - lo).length() + 1e-12);
+            Ok::<_, NotPolyhedral>((mesh, colors, found))
+        })
+        .map_err(crate::errors::meshing)?;
+    let found: Vec<String> = found.iter().map(|w| crate::errors::pythonic(w)).collect();
+    crate::warn::warn_all(py, &found)?;
+    let info = serde_json::json!({
+        "resolution": a.resolution,
+        "method": "polyhedral",
+        "colors": colors.as_ref().map_or(0, |c| c.used()),
+    });
+    let mut warnings = loaded.to_vec();
+    warnings.extend(found);
+    let mut out = PyMesh::from_indexed(py, mesh, warnings, info)?;
+    out.colors = colors;
+    Ok(out)
 }

@@ -421,6 +421,10 @@ impl PySolid {
     /// (or of `bounds`, `((xmin, ymin, zmin), (xmax, ymax, zmax))`, which also clips it), refined
     /// up to `refine` times finer where features are thinner than a cell. `progress(stage, done,
     /// total)` is called from this thread; Ctrl-C stops the run with KeyboardInterrupt.
+    /// `method="polyhedral"` uses no grid: boxes, polyhedra, meshes and flat-quad height fields
+    /// are combined by exact mesh Booleans (a cube is 12 triangles), and a part with no
+    /// polyhedral form is meshed alone with `resolution` cells along its own longest side, with a
+    /// warning.
     #[pyo3(signature = (resolution = 128, *, method = None, tolerance = None, bounds = None,
         refine = 32, max_memory = None, threads = None, progress = None, simplify = None,
         target_error = None))]

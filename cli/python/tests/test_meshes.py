@@ -224,3 +224,20 @@ def test_colours_reach_face_colors_the_report_and_saved_files(tmp_path):
         sk.sphere(1).color([2, 0, 0])
     inner = sk.sphere(1).color("lime").color("red", 0.5).mesh(resolution=16).face_colors
     assert (inner == [0, 255, 0, 255]).all()
+
+
+def test_polyhedral_booleans_are_exact():
+    # A box minus a box flush with three of its faces: exact, a few dozen triangles, no grid.
+    solid = sk.box(2) - sk.box([2, 1, 1]).translate([1, 0, 0])
+    m = solid.mesh(method="polyhedral")
+    r = m.report()
+    assert r["closed"] and r["manifold"] and r["genus"] == 0
+    assert math.isclose(r["volume"], 7.0, rel_tol=1e-12)
+    assert r["faces"] < 100
+    assert r["method"] == "polyhedral"
+    # A sphere is gridded alone (a warning says so) and cut exactly from the box: genus 5.
+    with pytest.warns(UserWarning, match="not a polyhedron"):
+        m = (sk.box(2) - sk.sphere(1.2)).mesh(method="polyhedral", resolution=64)
+    assert m.report()["genus"] == 5
+    with pytest.raises(ValueError, match="tolerance"):
+        sk.box(1).mesh(method="polyhedral", tolerance=0.1)
