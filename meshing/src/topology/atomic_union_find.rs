@@ -1,5 +1,5 @@
-//! Union-find that many threads may grow at once (the shells' and vertex fans' connectivity, in
-//! parallel over triangles and edges).
+//! Union-find that many threads may grow at once (the shells' connectivity, in parallel over
+//! vertices, and the half-edge builder's vertex fans, in parallel over edges).
 //!
 //! Parents are atomics. A union links the larger of the two roots to the smaller with a
 //! compare-and-swap (retrying when another thread moved either root first), so a root only ever

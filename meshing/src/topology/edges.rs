@@ -7,7 +7,8 @@
 //! undirected edge are adjacent, in ascending (smaller, larger) vertex order. Eight bytes per
 //! corner; deterministic; supports up to 2³² corners.
 //!
-//! Both the topology report (triangles) and the half-edge builder (polygons) use this table.
+//! The half-edge builder (polygons) and the repair use this table; the report uses vertex stars
+//! (`stars.rs`).
 
 use rayon::prelude::*;
 
@@ -63,7 +64,6 @@ pub(crate) struct EdgeTable {
     starts: Vec<usize>,
     /// `larger vertex << 32 | corner`, bucket by bucket, each bucket sorted.
     entries: Vec<u64>,
-    edge_count: usize,
 }
 
 impl EdgeTable {
@@ -95,24 +95,7 @@ impl EdgeTable {
             *slot += 1;
         }
         sort_buckets(&mut entries, &starts);
-        let edge_count = (0..vertex_count)
-            .into_par_iter()
-            .map(|v| {
-                entries[starts[v]..starts[v + 1]]
-                    .chunk_by(|x, y| x >> 32 == y >> 32)
-                    .count()
-            })
-            .sum();
-        Self {
-            starts,
-            entries,
-            edge_count,
-        }
-    }
-
-    /// Number of undirected edges.
-    pub(crate) fn edge_count(&self) -> usize {
-        self.edge_count
+        Self { starts, entries }
     }
 
     /// Number of vertex buckets (one past the largest vertex of any edge).
@@ -173,11 +156,6 @@ impl Edge<'_> {
         self.run.iter().map(|&e| (e & 0xFFFF_FFFF) as usize)
     }
 
-    /// The lowest corner using this edge.
-    pub(crate) fn first_corner(&self) -> usize {
-        (self.run[0] & 0xFFFF_FFFF) as usize
-    }
-
     /// How the faces use this edge.
     pub(crate) fn kind<C: CornerLoops + ?Sized>(&self, loops: &C) -> EdgeKind {
         let corner = |e: u64| (e & 0xFFFF_FFFF) as usize;
@@ -209,7 +187,7 @@ mod tests {
     fn two_triangles_share_one_edge() {
         let tris: &[[u32; 3]] = &[[0, 1, 2], [2, 1, 3]];
         let table = EdgeTable::build(tris);
-        assert_eq!(table.edge_count(), 5);
+        assert_eq!(table.edges().count(), 5);
         let kinds: Vec<([u32; 2], EdgeKind)> = table
             .edges()
             .map(|e| (e.vertices(), e.kind(tris)))

@@ -29,9 +29,12 @@
 mod atomic_union_find;
 mod defects;
 mod edges;
+mod local;
 mod measures;
 mod polygons;
 mod shells;
+mod stars;
+mod survey;
 mod text;
 mod verdict;
 mod vertices;
@@ -40,6 +43,8 @@ mod vertices;
 pub(crate) mod test_meshes;
 #[cfg(test)]
 mod tests;
+#[cfg(test)]
+mod tests_reference;
 
 use std::borrow::Cow;
 
@@ -55,6 +60,7 @@ use crate::IndexedMesh;
 use crate::intersect::{is_usable, self_intersections};
 use measures::Measures;
 use shells::{ShellTally, Shells};
+use survey::Survey;
 
 /// The most offending items of each kind listed in [`Offenders`].
 pub const MAX_EXAMPLES: usize = 8;
@@ -177,14 +183,6 @@ impl Default for ReportOptions {
     }
 }
 
-/// Counts of the defective edge kinds.
-#[derive(Debug, Clone, Copy, Default)]
-struct EdgeDefects {
-    boundary: usize,
-    non_manifold: usize,
-    inconsistent: usize,
-}
-
 impl TopologyReport {
     /// The report of `mesh`, self-intersections included. Never panics, whatever the indices (see
     /// the module docs).
@@ -229,32 +227,29 @@ impl TopologyReport {
         let vertex_count = mesh.positions.len();
         let triangles = usable_triangles(mesh);
         let tris: &[[u32; 3]] = &triangles;
-        // The edge table (parallel) beside the shells' union-find (serial), then the vertex fans
-        // beside the measures: on two threads each pair overlaps.
-        let (table, shells) =
-            rayon::join(|| EdgeTable::build(tris), || Shells::of(tris, vertex_count));
-        let (fans, measures) = rayon::join(
-            || fan_counts(tris, &table, vertex_count),
-            || Measures::of(mesh, |v| shells.is_referenced(v)),
+        let survey = Survey::of(tris, vertex_count);
+        let stars = &survey.stars;
+        let shells = &survey.shells;
+        let (measures, (vertices, shell_boxes)) = rayon::join(
+            || Measures::of(mesh, |v| stars.is_referenced(v)),
+            || {
+                let vertices = (0..vertex_count)
+                    .into_par_iter()
+                    .filter(|&v| stars.is_referenced(v))
+                    .count();
+                let boxes = if shells.count() > 1 {
+                    shell_boxes(mesh, shells)
+                } else {
+                    Vec::new()
+                };
+                (vertices, boxes)
+            },
         );
-        let mut tally = ShellTally::new(&shells);
-        let mut examples = Offenders::default();
-        let defects = classify_edges(tris, &table, &shells, &mut tally, &mut examples);
-        let non_manifold_vertices = classify_vertices(&fans, &shells, &mut tally, &mut examples);
+        let mut examples = survey.examples;
         examples.degenerate_faces = measures.degenerate_examples;
-
-        let vertices = (0..vertex_count)
-            .into_par_iter()
-            .filter(|&v| shells.is_referenced(v))
-            .count();
-        let (edges, faces) = (table.edge_count(), tris.len());
-        let genus_per_shell = tally.genus();
+        let genus_per_shell = ShellTally::new(shells, &survey.shares).genus();
         let genus = total_genus(&genus_per_shell);
-        let shell_boxes = if shells.count() > 1 {
-            shell_boxes(mesh, &shells)
-        } else {
-            Vec::new()
-        };
+        let (edges, faces) = (survey.edges, tris.len());
         Self {
             vertices,
             edges,
@@ -263,13 +258,13 @@ impl TopologyReport {
             shells: shells.count(),
             genus,
             genus_per_shell,
-            boundary_edges: defects.boundary,
-            non_manifold_edges: defects.non_manifold,
-            non_manifold_vertices,
-            inconsistent_edges: defects.inconsistent,
-            oriented: defects.inconsistent == 0,
-            closed: defects.boundary == 0 && faces > 0,
-            manifold: defects.non_manifold == 0 && non_manifold_vertices == 0,
+            boundary_edges: survey.boundary,
+            non_manifold_edges: survey.non_manifold,
+            non_manifold_vertices: survey.non_manifold_vertices,
+            inconsistent_edges: survey.inconsistent,
+            oriented: survey.inconsistent == 0,
+            closed: survey.boundary == 0 && faces > 0,
+            manifold: survey.non_manifold == 0 && survey.non_manifold_vertices == 0,
             degenerate_faces: measures.degenerate,
             unreferenced_vertices: vertex_count - vertices,
             volume: measures.volume,
@@ -322,53 +317,8 @@ fn usable_triangles(mesh: &IndexedMesh) -> Cow<'_, [[u32; 3]]> {
     }
 }
 
-/// Counts the defective edges, records examples and tallies edges per shell.
-fn classify_edges(
-    tris: &[[u32; 3]],
-    table: &EdgeTable,
-    shells: &Shells,
-    tally: &mut ShellTally,
-    examples: &mut Offenders,
-) -> EdgeDefects {
-    let mut defects = EdgeDefects::default();
-    for edge in table.edges() {
-        let kind = edge.kind(tris);
-        tally.add_edge(
-            shells.of_triangle(edge.first_corner() / 3),
-            kind != EdgeKind::Manifold,
-        );
-        let (count, list) = match kind {
-            EdgeKind::Manifold => continue,
-            EdgeKind::Boundary => (&mut defects.boundary, &mut examples.boundary_edges),
-            EdgeKind::NonManifold => (&mut defects.non_manifold, &mut examples.non_manifold_edges),
-            EdgeKind::Inconsistent => (&mut defects.inconsistent, &mut examples.inconsistent_edges),
-        };
-        *count += 1;
-        push_example(list, edge.vertices());
-    }
-    defects
-}
-
-/// Counts the non-manifold vertices, records examples and flags their shells.
-fn classify_vertices(
-    fans: &[u32],
-    shells: &Shells,
-    tally: &mut ShellTally,
-    examples: &mut Offenders,
-) -> usize {
-    let mut count = 0;
-    for (v, _) in fans.iter().enumerate().filter(|&(_, &n)| n > 1) {
-        count += 1;
-        push_example(&mut examples.non_manifold_vertices, v as u32);
-        if let Some(s) = shells.of_vertex(v) {
-            tally.mark_defective(s);
-        }
-    }
-    count
-}
-
 /// Appends `item` when fewer than [`MAX_EXAMPLES`] are listed.
-fn push_example<T>(list: &mut Vec<T>, item: T) {
+pub(super) fn push_example<T>(list: &mut Vec<T>, item: T) {
     if list.len() < MAX_EXAMPLES {
         list.push(item);
     }

@@ -1,54 +1,63 @@
 //! Shells: connected components of triangles, where sharing a vertex connects.
 //!
-//! Shells are numbered by their smallest triangle index. [`ShellTally`] counts each shell's
-//! vertices, edges and faces and whether it has a defect, giving the genus of every shell that is a
+//! The vertex pass (`mod.rs`) joins the two ends of every edge in a concurrent union-find over
+//! vertices; [`Shells::number`] then numbers the sets by their smallest triangle index (the order
+//! of [`super::TopologyReport::genus_per_shell`]). [`ShellTally`] sums each shell's vertices'
+//! shares of `V − E + F` and defect flags (`local.rs`), giving the genus of every shell that is a
 //! closed, oriented manifold (χ = 2 − 2g).
 
 use super::atomic_union_find::AtomicUnionFind;
+use super::stars::Stars;
 use rayon::prelude::*;
-use std::sync::atomic::{AtomicUsize, Ordering};
 
-/// Marker for "no triangle" in [`Shells::first_triangle`].
-const NONE: usize = usize::MAX;
+/// Marker for "no shell" (an unreferenced vertex).
+const NONE: u32 = u32::MAX;
 
-/// The shell of every triangle and vertex.
+/// The shell of every vertex.
 #[derive(Debug, Clone)]
 pub(crate) struct Shells {
-    /// Shell number of each triangle.
-    of_triangle: Vec<u32>,
-    /// For each vertex, the first triangle using it (`NONE` when unreferenced).
-    first_triangle: Vec<usize>,
+    /// Shell number of each vertex, `NONE` when unreferenced.
+    of_vertex: Vec<u32>,
     /// Number of shells.
     count: usize,
 }
 
 impl Shells {
-    /// Shells of `triangles` (all indices below `vertex_count`).
-    pub(crate) fn of(triangles: &[[u32; 3]], vertex_count: usize) -> Self {
-        // In parallel: each vertex's first (smallest) triangle, then every triangle joined to the
-        // first triangle of each of its vertices (so all triangles at a vertex are joined).
-        let first: Vec<AtomicUsize> = (0..vertex_count).map(|_| AtomicUsize::new(NONE)).collect();
-        triangles.par_iter().enumerate().for_each(|(t, tri)| {
-            for &v in tri {
-                first[v as usize].fetch_min(t, Ordering::Relaxed);
-            }
-        });
-        let first_triangle: Vec<usize> = first.into_iter().map(AtomicUsize::into_inner).collect();
-        let sets = AtomicUnionFind::new(triangles.len());
-        triangles.par_iter().enumerate().for_each(|(t, tri)| {
-            for &v in tri {
-                let f = first_triangle[v as usize];
-                if f != t {
-                    sets.union(f, t);
+    /// Numbers the sets of `sets` (over the vertices of `stars`, every edge's ends joined) in
+    /// order of their smallest triangle in `triangles`.
+    pub(crate) fn number(sets: &AtomicUnionFind, stars: &Stars, triangles: &[[u32; 3]]) -> Self {
+        let roots: Vec<u32> = (0..stars.vertex_count())
+            .into_par_iter()
+            .with_min_len(4096)
+            .map(|v| {
+                if stars.is_referenced(v) {
+                    sets.find(v) as u32
+                } else {
+                    NONE
                 }
+            })
+            .collect();
+        let mut number_of_root = vec![NONE; roots.len()];
+        let mut count = 0usize;
+        for tri in triangles {
+            let slot = &mut number_of_root[roots[tri[0] as usize] as usize];
+            if *slot == NONE {
+                *slot = u32::try_from(count).unwrap_or(NONE);
+                count += 1;
             }
-        });
-        let (of_triangle, count) = number_sets(&sets, triangles.len());
-        Self {
-            of_triangle,
-            first_triangle,
-            count,
         }
+        let of_vertex = roots
+            .par_iter()
+            .with_min_len(4096)
+            .map(|&r| {
+                if r == NONE {
+                    NONE
+                } else {
+                    number_of_root[r as usize]
+                }
+            })
+            .collect();
+        Self { of_vertex, count }
     }
 
     /// Number of shells.
@@ -56,97 +65,48 @@ impl Shells {
         self.count
     }
 
-    /// Shell of triangle `t`.
-    pub(crate) fn of_triangle(&self, t: usize) -> usize {
-        self.of_triangle[t] as usize
-    }
-
     /// Shell of vertex `v`, `None` when no triangle uses it.
     pub(crate) fn of_vertex(&self, v: usize) -> Option<usize> {
-        match self.first_triangle[v] {
+        match self.of_vertex[v] {
             NONE => None,
-            t => Some(self.of_triangle(t)),
+            s => Some(s as usize),
         }
-    }
-
-    /// True when some triangle uses vertex `v`.
-    pub(crate) fn is_referenced(&self, v: usize) -> bool {
-        self.first_triangle[v] != NONE
     }
 }
 
-/// Numbers the sets `0..` in order of their smallest element (each set's root, see
-/// [`AtomicUnionFind`]).
-fn number_sets(sets: &AtomicUnionFind, len: usize) -> (Vec<u32>, usize) {
-    let roots: Vec<u32> = (0..len)
-        .into_par_iter()
-        .map(|x| sets.find(x) as u32)
-        .collect();
-    let mut number_of_root = vec![u32::MAX; len];
-    let mut count = 0usize;
-    for (x, &root) in roots.iter().enumerate() {
-        if root as usize == x {
-            number_of_root[x] = u32::try_from(count).unwrap_or(u32::MAX);
-            count += 1;
-        }
-    }
-    // A root is its set's smallest element, numbered before any element that points to it.
-    let of_element = roots
-        .par_iter()
-        .map(|&root| number_of_root[root as usize])
-        .collect();
-    (of_element, count)
-}
-
-/// Per-shell vertex, edge and face counts and defect flags.
+/// Per-shell `V − E + F` and defect flags.
 #[derive(Debug, Clone)]
 pub(crate) struct ShellTally {
-    vertices: Vec<i64>,
-    edges: Vec<i64>,
-    faces: Vec<i64>,
+    chi: Vec<i64>,
     defective: Vec<bool>,
 }
 
 impl ShellTally {
-    /// Counts the faces and vertices of every shell; edges are added with [`Self::add_edge`].
-    pub(crate) fn new(shells: &Shells) -> Self {
+    /// Sums the vertices' shares: `shares[v]` is vertex `v`'s share of `V − E + F` and whether it
+    /// or one of its edges is a defect.
+    pub(crate) fn new(shells: &Shells, shares: &[(i32, bool)]) -> Self {
         let n = shells.count();
         let mut tally = Self {
-            vertices: vec![0; n],
-            edges: vec![0; n],
-            faces: vec![0; n],
+            chi: vec![0; n],
             defective: vec![false; n],
         };
-        for &s in &shells.of_triangle {
-            tally.faces[s as usize] += 1;
-        }
-        for v in 0..shells.first_triangle.len() {
+        for (v, &(chi, defective)) in shares.iter().enumerate() {
             if let Some(s) = shells.of_vertex(v) {
-                tally.vertices[s] += 1;
+                tally.chi[s] += i64::from(chi);
+                tally.defective[s] |= defective;
             }
         }
         tally
     }
 
-    /// Counts one edge of `shell`; a defective edge (boundary, non-manifold or inconsistent)
-    /// disqualifies the shell from having a genus.
-    pub(crate) fn add_edge(&mut self, shell: usize, defective: bool) {
-        self.edges[shell] += 1;
-        self.defective[shell] |= defective;
-    }
-
-    /// Marks `shell` as not a closed oriented manifold (e.g. it has a non-manifold vertex).
-    pub(crate) fn mark_defective(&mut self, shell: usize) {
-        self.defective[shell] = true;
-    }
-
     /// The genus of every shell that is a closed oriented manifold, `None` for the others.
     pub(crate) fn genus(&self) -> Vec<Option<i64>> {
-        (0..self.faces.len())
-            .map(|s| {
-                let chi = self.vertices[s] - self.edges[s] + self.faces[s];
+        self.chi
+            .iter()
+            .zip(&self.defective)
+            .map(|(&chi, &defective)| {
                 let twice_genus = 2 - chi;
-                let valid = !self.defective[s] && twice_genus >= 0 && twice_genus % 2 == 0;
+                let valid = !defective && twice_genus >= 0 && twice_genus % 2 == 0;
                 valid.then_some(twice_genus / 2)
             })
             .collect()
@@ -155,68 +115,60 @@ impl ShellTally {
 
 #[cfg(test)]
 mod tests {
-    use super::{ShellTally, Shells};
+    use super::{AtomicUnionFind, ShellTally, Shells, Stars};
 
-    #[test]
-    fn shells_join_through_shared_vertices_and_are_numbered_by_first_triangle() {
-        // Triangles 0 and 2 share vertex 2; triangle 1 is separate; vertex 9 unused.
-        let tris = [[0, 1, 2], [5, 6, 7], [2, 3, 4]];
-        let shells = Shells::of(&tris, 10);
-        assert_eq!(shells.count(), 2);
-        assert_eq!(shells.of_triangle(0), 0);
-        assert_eq!(shells.of_triangle(1), 1);
-        assert_eq!(shells.of_triangle(2), 0);
-        assert_eq!(shells.of_vertex(4), Some(0));
-        assert_eq!(shells.of_vertex(9), None);
-        assert!(!shells.is_referenced(8));
+    /// The shells of `tris` with every triangle's vertices joined.
+    fn shells(tris: &[[u32; 3]], vertex_count: usize) -> Shells {
+        let stars = Stars::build(tris, vertex_count);
+        let sets = AtomicUnionFind::new(vertex_count);
+        for t in tris {
+            sets.union(t[0] as usize, t[1] as usize);
+            sets.union(t[0] as usize, t[2] as usize);
+        }
+        Shells::number(&sets, &stars, tris)
     }
 
     #[test]
-    fn shells_do_not_depend_on_the_thread_count() {
-        // 2000 strips of 50 triangles each, the triangles of all strips interleaved, so that
-        // concurrent unions race on every strip: the numbering is the one-thread numbering.
-        let (strips, len) = (2000u32, 50u32);
-        let tris: Vec<[u32; 3]> = (0..len)
-            .flat_map(|k| (0..strips).map(move |s| [s * 100 + k, s * 100 + k + 1, s * 100 + k + 2]))
-            .collect();
-        let run = |threads| {
-            let pool = rayon::ThreadPoolBuilder::new()
-                .num_threads(threads)
-                .build()
-                .unwrap();
-            let shells = pool.install(|| Shells::of(&tris, (strips * 100) as usize));
-            (
-                shells.count(),
-                (0..tris.len())
-                    .map(|t| shells.of_triangle(t))
-                    .collect::<Vec<_>>(),
-            )
-        };
-        let one = run(1);
-        assert_eq!(one.0, strips as usize);
-        assert!(
-            one.1
-                .iter()
-                .enumerate()
-                .all(|(t, &s)| s == t % strips as usize)
-        );
-        for _ in 0..3 {
-            assert_eq!(run(4), one);
-        }
+    fn shells_join_through_shared_vertices_and_are_numbered_by_first_triangle() {
+        // Triangles 0 and 2 share vertex 2; triangle 1 is separate (and has the smallest
+        // vertices); vertex 9 unused.
+        let tris = [[3, 4, 2], [0, 1, 5], [2, 6, 7]];
+        let shells = shells(&tris, 10);
+        assert_eq!(shells.count(), 2);
+        assert_eq!(shells.of_vertex(3), Some(0));
+        assert_eq!(shells.of_vertex(0), Some(1));
+        assert_eq!(shells.of_vertex(7), Some(0));
+        assert_eq!(shells.of_vertex(9), None);
     }
 
     #[test]
     fn tally_gives_genus_only_for_sound_shells() {
         let tris = [[0, 1, 2], [3, 4, 5]];
-        let shells = Shells::of(&tris, 6);
-        let mut tally = ShellTally::new(&shells);
-        for _ in 0..3 {
-            tally.add_edge(0, false);
-            tally.add_edge(1, false);
-        }
-        // χ = 3 − 3 + 1 = 1 is odd: not a closed surface even without flagged edges.
-        assert_eq!(tally.genus(), vec![None, None]);
-        tally.mark_defective(1);
-        assert_eq!(tally.genus(), vec![None, None]);
+        let shells = shells(&tris, 6);
+        // Shell 0: χ = 2 (a sphere's); shell 1: χ = 1 (odd: not a closed surface).
+        let shares = [
+            (2, false),
+            (0, false),
+            (0, false),
+            (1, false),
+            (0, false),
+            (0, false),
+        ];
+        assert_eq!(
+            ShellTally::new(&shells, &shares).genus(),
+            vec![Some(0), None]
+        );
+        let flagged = [
+            (2, false),
+            (0, true),
+            (0, false),
+            (2, false),
+            (0, false),
+            (0, false),
+        ];
+        assert_eq!(
+            ShellTally::new(&shells, &flagged).genus(),
+            vec![None, Some(0)]
+        );
     }
 }

@@ -1,0 +1,232 @@
+//! What one vertex's star says: the kind of every edge from the vertex to a larger one, the
+//! number of fans around it, and its share of the Euler characteristic.
+//!
+//! In the star of `v` (`stars.rs`) the triangle `[v, b, a]` is `[b, a]`: it uses the edge
+//! `{v, b}` leaving `v` and the edge `{v, a}` entering it. So an edge `{v, x}` is used
+//! `out = #{b = x}` times in one direction and `in = #{a = x}` times in the other: once in all, a
+//! boundary edge; once each way, a manifold edge; twice the same way, an inconsistent edge; more,
+//! a non-manifold edge. The triangles at `v` form one group per connected component of the star's
+//! link graph (neighbours as nodes, each triangle joining its `b` and `a`): the vertex's fans.
+//!
+//! The common case is checked first, in O(k²) small steps without allocation: starting from the
+//! first triangle, the next one around `v` is the first whose `a` is this one's `b`; when that
+//! walk comes back after visiting all `k` triangles, every `b` is matched to a distinct `a`, so
+//! every edge at `v` is used once each way and there is one closed fan. Otherwise (or for stars of
+//! more than 64 triangles) the neighbours are sorted and counted.
+//!
+//! Each edge `{v, x}` is judged from its smaller end only, so every edge is counted once; summing
+//! `1 − #{x > v} + #{triangles whose smallest vertex is v}` over a shell's vertices gives its
+//! `V − E + F`.
+
+use super::edges::EdgeKind;
+
+/// The most triangles a star may have for the allocation-free walk (one bit each).
+const WALK_LIMIT: usize = 64;
+
+/// What the star of one vertex says.
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub(crate) struct Local {
+    /// `1 − (edges to larger vertices) + (triangles whose smallest vertex this is)`.
+    pub(crate) chi: i64,
+    /// Edges to larger vertices.
+    pub(crate) edges: usize,
+    /// Edges to larger vertices used by one triangle only.
+    pub(crate) boundary: usize,
+    /// Edges to larger vertices used by more than two triangles.
+    pub(crate) non_manifold: usize,
+    /// Edges to larger vertices used twice in the same direction.
+    pub(crate) inconsistent: usize,
+    /// Fans around the vertex (0 when unused).
+    pub(crate) fans: usize,
+}
+
+impl Local {
+    /// True when the vertex or one of its edges to larger vertices is a defect (the shell then
+    /// has no genus).
+    pub(crate) fn defective(&self) -> bool {
+        self.fans > 1 || self.boundary + self.non_manifold + self.inconsistent > 0
+    }
+}
+
+/// Reusable space for the slow path.
+#[derive(Debug, Default)]
+pub(crate) struct Scratch {
+    neighbours: Vec<u32>,
+    outs: Vec<u32>,
+    ins: Vec<u32>,
+    parent: Vec<u32>,
+}
+
+/// Analyses the star of `v`; `edge(x, kind)` is called for every edge `{v, x}` with `x > v`, in
+/// ascending `x` order on the slow path (the fast path finds only manifold edges and calls it for
+/// none).
+pub(crate) fn analyse(
+    v: u32,
+    star: &[[u32; 2]],
+    scratch: &mut Scratch,
+    mut edge: impl FnMut(u32, EdgeKind),
+) -> Local {
+    if star.is_empty() {
+        return Local::default();
+    }
+    if let Some(local) = closed_fan(v, star) {
+        return local;
+    }
+    let mut local = Local::default();
+    let faces = star.iter().filter(|&&[b, a]| b > v && a > v).count();
+    let Scratch {
+        neighbours,
+        outs,
+        ins,
+        parent,
+    } = scratch;
+    neighbours.clear();
+    neighbours.extend(star.as_flattened());
+    neighbours.sort_unstable();
+    neighbours.dedup();
+    outs.clear();
+    outs.extend(star.iter().map(|l| l[0]));
+    outs.sort_unstable();
+    ins.clear();
+    ins.extend(star.iter().map(|l| l[1]));
+    ins.sort_unstable();
+    for &x in neighbours.iter().filter(|&&x| x > v) {
+        let kind = match (count(outs, x), count(ins, x)) {
+            (1, 1) => EdgeKind::Manifold,
+            (out, inn) if out + inn == 1 => EdgeKind::Boundary,
+            (out, inn) if out + inn == 2 => EdgeKind::Inconsistent,
+            _ => EdgeKind::NonManifold,
+        };
+        local.edges += 1;
+        match kind {
+            EdgeKind::Manifold => {}
+            EdgeKind::Boundary => local.boundary += 1,
+            EdgeKind::Inconsistent => local.inconsistent += 1,
+            EdgeKind::NonManifold => local.non_manifold += 1,
+        }
+        edge(x, kind);
+    }
+    local.fans = fans(star, neighbours, parent);
+    local.chi = 1 - to_i64(local.edges) + to_i64(faces);
+    local
+}
+
+/// The fast path: `Some` when the star is one closed fan whose every edge is used once each way.
+fn closed_fan(v: u32, star: &[[u32; 2]]) -> Option<Local> {
+    let k = star.len();
+    if !(3..=WALK_LIMIT).contains(&k) {
+        return None;
+    }
+    let mut visited = 0u64;
+    let mut at = 0usize;
+    for _ in 0..k {
+        visited |= 1 << at;
+        let b = star[at][0];
+        at = star.iter().position(|l| l[1] == b)?;
+    }
+    if at != 0 || visited.count_ones() as usize != k {
+        return None;
+    }
+    let edges = star.iter().filter(|l| l[0] > v).count();
+    let faces = star.iter().filter(|&&[b, a]| b > v && a > v).count();
+    Some(Local {
+        chi: 1 - to_i64(edges) + to_i64(faces),
+        edges,
+        fans: 1,
+        ..Local::default()
+    })
+}
+
+/// Connected components of the link graph: `neighbours` sorted and distinct, every triangle
+/// `[b, a]` joining its two neighbours.
+fn fans(star: &[[u32; 2]], neighbours: &[u32], parent: &mut Vec<u32>) -> usize {
+    parent.clear();
+    parent.extend(0..neighbours.len() as u32);
+    let index = |x: u32| neighbours.binary_search(&x).unwrap_or(0);
+    let mut components = neighbours.len();
+    for &[b, a] in star {
+        let (rb, ra) = (root(parent, index(b)), root(parent, index(a)));
+        if rb != ra {
+            parent[rb.max(ra)] = rb.min(ra) as u32;
+            components -= 1;
+        }
+    }
+    components
+}
+
+/// How often `x` occurs in the sorted `items`.
+fn count(items: &[u32], x: u32) -> usize {
+    let first = items.partition_point(|&y| y < x);
+    items[first..].partition_point(|&y| y == x)
+}
+
+/// The root of `x` in a small union-find, halving the path.
+fn root(parent: &mut [u32], mut x: usize) -> usize {
+    while parent[x] as usize != x {
+        let grand = parent[parent[x] as usize];
+        parent[x] = grand;
+        x = grand as usize;
+    }
+    x
+}
+
+/// `usize` to `i64`, saturating.
+fn to_i64(n: usize) -> i64 {
+    i64::try_from(n).unwrap_or(i64::MAX)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::{EdgeKind, Local, Scratch, analyse};
+
+    fn run(v: u32, star: &[[u32; 2]]) -> (Local, Vec<(u32, EdgeKind)>) {
+        let mut kinds = Vec::new();
+        let local = analyse(v, star, &mut Scratch::default(), |x, k| kinds.push((x, k)));
+        (local, kinds)
+    }
+
+    #[test]
+    fn closed_fan_takes_the_fast_path() {
+        // Vertex 0 of an octahedron-like fan 1..4: triangles [0,1,2], [0,2,3], [0,3,4], [0,4,1].
+        let (local, kinds) = run(0, &[[1, 2], [2, 3], [3, 4], [4, 1]]);
+        assert_eq!((local.fans, local.edges, local.chi), (1, 4, 1 - 4 + 4));
+        assert!(!local.defective() && kinds.is_empty());
+    }
+
+    #[test]
+    fn two_fans_at_a_tip_and_a_flipped_triangle() {
+        // Two closed fans around vertex 0 (1,2,3 and 4,5,6): a non-manifold vertex.
+        let (local, _) = run(0, &[[1, 2], [2, 3], [3, 1], [4, 5], [5, 6], [6, 4]]);
+        assert_eq!((local.fans, local.edges), (2, 6));
+        assert!(local.defective());
+        // One triangle flipped: edges {0,1} and {0,3} are used twice the same way... and {0,2}
+        // once each way.
+        let (local, kinds) = run(0, &[[1, 2], [2, 3], [1, 3]]);
+        assert_eq!(local.fans, 1);
+        assert_eq!(
+            kinds,
+            vec![
+                (1, EdgeKind::Inconsistent),
+                (2, EdgeKind::Manifold),
+                (3, EdgeKind::Inconsistent)
+            ]
+        );
+        assert_eq!((local.inconsistent, local.boundary), (2, 0));
+    }
+
+    #[test]
+    fn open_fan_and_a_fin() {
+        // An open fan 1-2-3: edges {0,1} and {0,3} are boundary edges.
+        let (local, kinds) = run(0, &[[1, 2], [2, 3]]);
+        assert_eq!((local.fans, local.boundary), (1, 2));
+        assert_eq!(kinds[1], (2, EdgeKind::Manifold));
+        // Three triangles on edge {0,1}: non-manifold; seen from vertex 5 edges to 0 and 1 are
+        // not counted (smaller), and the edge to 7 is.
+        let (local, kinds) = run(0, &[[1, 2], [3, 1], [1, 4]]);
+        assert_eq!(kinds[0], (1, EdgeKind::NonManifold));
+        assert_eq!(local.non_manifold, 1);
+        let (local, kinds) = run(5, &[[0, 1], [1, 7]]);
+        assert_eq!(kinds, vec![(7, EdgeKind::Boundary)]);
+        assert_eq!((local.edges, local.chi), (1, 1 - 1));
+    }
+}

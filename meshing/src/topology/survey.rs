@@ -1,0 +1,155 @@
+//! The vertex pass of the report: every vertex's star analysed (`local.rs`) in parallel chunks,
+//! the ends of every edge joined into shells, and the counts and first examples of each defect
+//! kind gathered in vertex order.
+//!
+//! Chunks are fixed ranges of vertices whose partial results are combined in chunk order, so the
+//! counts and examples (ascending `[smaller, larger]` edges, ascending vertices) are the same on
+//! every thread count.
+
+use rayon::prelude::*;
+
+use super::atomic_union_find::AtomicUnionFind;
+use super::edges::EdgeKind;
+use super::local::{Local, Scratch, analyse};
+use super::shells::Shells;
+use super::stars::Stars;
+use super::{MAX_EXAMPLES, Offenders, push_example};
+
+/// Vertices per parallel work item.
+const CHUNK: usize = 1 << 12;
+
+/// What the vertex pass found.
+#[derive(Debug)]
+pub(crate) struct Survey {
+    /// The vertex stars.
+    pub(crate) stars: Stars,
+    /// The shell of every vertex.
+    pub(crate) shells: Shells,
+    /// Each vertex's share of `V − E + F` and whether it or an edge to a larger vertex is a
+    /// defect.
+    pub(crate) shares: Vec<(i32, bool)>,
+    /// Undirected edges, boundary, non-manifold and inconsistent ones.
+    pub(crate) edges: usize,
+    pub(crate) boundary: usize,
+    pub(crate) non_manifold: usize,
+    pub(crate) inconsistent: usize,
+    /// Vertices with more than one fan.
+    pub(crate) non_manifold_vertices: usize,
+    /// The first examples of the edge and vertex defects.
+    pub(crate) examples: Offenders,
+}
+
+/// Counts of one chunk of vertices.
+#[derive(Debug, Default)]
+struct Partial {
+    edges: usize,
+    boundary: usize,
+    non_manifold: usize,
+    inconsistent: usize,
+    non_manifold_vertices: usize,
+    examples: Offenders,
+}
+
+impl Partial {
+    /// Appends `other` (a later chunk) to `self`.
+    fn absorb(mut self, other: Self) -> Self {
+        self.edges += other.edges;
+        self.boundary += other.boundary;
+        self.non_manifold += other.non_manifold;
+        self.inconsistent += other.inconsistent;
+        self.non_manifold_vertices += other.non_manifold_vertices;
+        let (mine, theirs) = (&mut self.examples, other.examples);
+        for (list, more) in [
+            (&mut mine.boundary_edges, theirs.boundary_edges),
+            (&mut mine.non_manifold_edges, theirs.non_manifold_edges),
+            (&mut mine.inconsistent_edges, theirs.inconsistent_edges),
+        ] {
+            for e in more {
+                push_example(list, e);
+            }
+        }
+        for v in theirs.non_manifold_vertices {
+            push_example(&mut mine.non_manifold_vertices, v);
+        }
+        self
+    }
+
+    /// Adds one vertex's findings.
+    fn add(&mut self, v: u32, local: &Local) {
+        self.edges += local.edges;
+        self.boundary += local.boundary;
+        self.non_manifold += local.non_manifold;
+        self.inconsistent += local.inconsistent;
+        if local.fans > 1 {
+            self.non_manifold_vertices += 1;
+            push_example(&mut self.examples.non_manifold_vertices, v);
+        }
+    }
+}
+
+impl Survey {
+    /// The vertex pass over the usable `triangles` (indices below `vertex_count`).
+    pub(crate) fn of(triangles: &[[u32; 3]], vertex_count: usize) -> Self {
+        let stars = Stars::build(triangles, vertex_count);
+        let sets = AtomicUnionFind::new(vertex_count);
+        let mut shares = vec![(0i32, false); vertex_count];
+        let total = shares
+            .par_chunks_mut(CHUNK)
+            .enumerate()
+            .map_init(Scratch::default, |scratch, (i, shares)| {
+                let mut partial = Partial::default();
+                for (offset, share) in shares.iter_mut().enumerate() {
+                    let v = (i * CHUNK + offset) as u32;
+                    let star = stars.of(v as usize);
+                    let examples = &mut partial.examples;
+                    let local = analyse(v, star, scratch, |x, kind| {
+                        let list = match kind {
+                            EdgeKind::Manifold => return,
+                            EdgeKind::Boundary => &mut examples.boundary_edges,
+                            EdgeKind::NonManifold => &mut examples.non_manifold_edges,
+                            EdgeKind::Inconsistent => &mut examples.inconsistent_edges,
+                        };
+                        if list.len() < MAX_EXAMPLES {
+                            list.push([v, x]);
+                        }
+                    });
+                    partial.add(v, &local);
+                    *share = (
+                        i32::try_from(local.chi).unwrap_or(i32::MIN),
+                        local.defective(),
+                    );
+                    join_edges(&sets, v, star, &local);
+                }
+                partial
+            })
+            .collect::<Vec<_>>()
+            .into_iter()
+            .fold(Partial::default(), Partial::absorb);
+        let shells = Shells::number(&sets, &stars, triangles);
+        Self {
+            stars,
+            shells,
+            shares,
+            edges: total.edges,
+            boundary: total.boundary,
+            non_manifold: total.non_manifold,
+            inconsistent: total.inconsistent,
+            non_manifold_vertices: total.non_manifold_vertices,
+            examples: total.examples,
+        }
+    }
+}
+
+/// Joins `v` to every larger neighbour. In a clean closed fan every neighbour is some
+/// triangle's next vertex, so the next vertices suffice.
+fn join_edges(sets: &AtomicUnionFind, v: u32, star: &[[u32; 2]], local: &Local) {
+    let clean = local.fans == 1 && !local.defective();
+    for &[b, a] in star {
+        if b > v {
+            sets.union(v as usize, b as usize);
+        }
+        if !clean && a > v {
+            sets.union(v as usize, a as usize);
+        }
+    }
+}
