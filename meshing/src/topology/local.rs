@@ -112,29 +112,79 @@ pub(crate) fn analyse(
 }
 
 /// The fast path: `Some` when the star is one closed fan whose every edge is used once each way.
+///
+/// A walk that comes back to the first triangle after exactly `k` steps visited `k` distinct
+/// triangles (a repeated one would trap it in a cycle without the first), so every `b` is matched
+/// to a distinct `a`.
 fn closed_fan(v: u32, star: &[[u32; 2]]) -> Option<Local> {
     let k = star.len();
     if !(3..=WALK_LIMIT).contains(&k) {
         return None;
     }
-    let mut visited = 0u64;
-    let mut at = 0usize;
-    for _ in 0..k {
-        visited |= 1 << at;
-        let b = star[at][0];
-        at = star.iter().position(|l| l[1] == b)?;
+    // The previous vertices of small stars in eight lanes (padding never matches: no vertex is
+    // u32::MAX, the triangles being usable), compared all at once.
+    let mut lanes = [u32::MAX; 8];
+    if k <= 8 {
+        for (lane, l) in lanes.iter_mut().zip(star) {
+            *lane = l[1];
+        }
     }
-    if at != 0 || visited.count_ones() as usize != k {
+    // The next triangle around `v` after each one: the first entering through its `b` (all
+    // found independently), then one walk over those steps.
+    let mut step = [0u8; WALK_LIMIT];
+    let (mut edges, mut faces) = (0usize, 0usize);
+    for (i, &[b, a]) in star.iter().enumerate() {
+        edges += usize::from(b > v);
+        faces += usize::from((b > v) & (a > v));
+        let next = entering(star, &lanes, b);
+        if next == k {
+            return None;
+        }
+        step[i] = next as u8;
+    }
+    // Back at the first triangle after exactly k steps: the steps are one cycle through all.
+    let mut at = 0usize;
+    for n in 1..=k {
+        at = usize::from(step[at]);
+        if at == 0 {
+            if n < k {
+                return None;
+            }
+            break;
+        }
+    }
+    if at != 0 {
         return None;
     }
-    let edges = star.iter().filter(|l| l[0] > v).count();
-    let faces = star.iter().filter(|&&[b, a]| b > v && a > v).count();
     Some(Local {
         chi: 1 - to_i64(edges) + to_i64(faces),
         edges,
         fans: 1,
         ..Local::default()
     })
+}
+
+/// The first triangle of `star` whose previous vertex is `b` (`star.len()` when none); `lanes`
+/// holds the previous vertices when the star has at most eight triangles.
+fn entering(star: &[[u32; 2]], lanes: &[u32; 8], b: u32) -> usize {
+    if star.len() <= 8 {
+        let mask = lanes
+            .iter()
+            .enumerate()
+            .fold(0u32, |m, (j, &a)| m | (u32::from(a == b) << j));
+        return if mask == 0 {
+            star.len()
+        } else {
+            mask.trailing_zeros() as usize
+        };
+    }
+    let mut next = star.len();
+    for (j, l) in star.iter().enumerate().rev() {
+        if l[1] == b {
+            next = j;
+        }
+    }
+    next
 }
 
 /// Connected components of the link graph: `neighbours` sorted and distinct, every triangle

@@ -59,7 +59,7 @@ pub(crate) use vertices::fan_counts;
 use crate::IndexedMesh;
 use crate::intersect::{is_usable, self_intersections};
 use measures::Measures;
-use shells::{ShellTally, Shells};
+use shells::ShellTally;
 use survey::Survey;
 
 /// The most offending items of each kind listed in [`Offenders`].
@@ -230,24 +230,19 @@ impl TopologyReport {
         let survey = Survey::of(tris, vertex_count);
         let stars = &survey.stars;
         let shells = &survey.shells;
-        let (measures, (vertices, shell_boxes)) = rayon::join(
+        let (measures, tally) = rayon::join(
             || Measures::of(mesh, |v| stars.is_referenced(v)),
-            || {
-                let vertices = (0..vertex_count)
-                    .into_par_iter()
-                    .filter(|&v| stars.is_referenced(v))
-                    .count();
-                let boxes = if shells.count() > 1 {
-                    shell_boxes(mesh, shells)
-                } else {
-                    Vec::new()
-                };
-                (vertices, boxes)
-            },
+            || ShellTally::new(shells, &survey.shares, &mesh.positions),
         );
         let mut examples = survey.examples;
         examples.degenerate_faces = measures.degenerate_examples;
-        let genus_per_shell = ShellTally::new(shells, &survey.shares).genus();
+        let genus_per_shell = tally.genus();
+        let vertices = tally.vertices();
+        let shell_boxes = if shells.count() > 1 {
+            tally.into_boxes()
+        } else {
+            Vec::new()
+        };
         let genus = total_genus(&genus_per_shell);
         let (edges, faces) = (survey.edges, tris.len());
         Self {
@@ -287,18 +282,6 @@ impl TopologyReport {
     pub fn is_valid_solid(&self) -> bool {
         self.is_closed_manifold() && self.self_intersections.unwrap_or(0) == 0
     }
-}
-
-/// The bounding box of each shell of `mesh`, from its referenced vertices.
-fn shell_boxes(mesh: &IndexedMesh, shells: &Shells) -> Vec<[glam::DVec3; 2]> {
-    let mut boxes = vec![[glam::DVec3::INFINITY, glam::DVec3::NEG_INFINITY]; shells.count()];
-    for (v, p) in mesh.positions.iter().enumerate() {
-        if let Some(b) = shells.of_vertex(v).and_then(|s| boxes.get_mut(s)) {
-            b[0] = b[0].min(*p);
-            b[1] = b[1].max(*p);
-        }
-    }
-    boxes
 }
 
 /// The usable triangles (see [`is_usable`]), borrowed when all are.

@@ -8,7 +8,15 @@
 
 use super::atomic_union_find::AtomicUnionFind;
 use super::stars::Stars;
+use std::collections::HashSet;
+
+use glam::DVec3;
 use rayon::prelude::*;
+
+use crate::io::key_hash::KeyHash;
+
+/// Triangles per parallel work item of the numbering.
+const TRIANGLE_CHUNK: usize = 1 << 15;
 
 /// Marker for "no shell" (an unreferenced vertex).
 const NONE: u32 = u32::MAX;
@@ -37,10 +45,28 @@ impl Shells {
                 }
             })
             .collect();
+        // Each chunk of triangles lists the roots it meets first, in order (a root repeated from
+        // the triangle before costs no lookup); the lists, in chunk order, number the roots.
+        let firsts: Vec<Vec<u32>> = triangles
+            .par_chunks(TRIANGLE_CHUNK)
+            .map(|chunk| {
+                let mut seen: HashSet<u32, KeyHash> = HashSet::default();
+                let mut order = Vec::new();
+                let mut last = NONE;
+                for tri in chunk {
+                    let r = roots[tri[0] as usize];
+                    if r != last && seen.insert(r) {
+                        order.push(r);
+                    }
+                    last = r;
+                }
+                order
+            })
+            .collect();
         let mut number_of_root = vec![NONE; roots.len()];
         let mut count = 0usize;
-        for tri in triangles {
-            let slot = &mut number_of_root[roots[tri[0] as usize] as usize];
+        for r in firsts.into_iter().flatten() {
+            let slot = &mut number_of_root[r as usize];
             if *slot == NONE {
                 *slot = u32::try_from(count).unwrap_or(NONE);
                 count += 1;
@@ -74,29 +100,73 @@ impl Shells {
     }
 }
 
-/// Per-shell `V − E + F` and defect flags.
-#[derive(Debug, Clone)]
+/// Per-shell `V − E + F`, defect flags and bounding boxes, and the referenced vertex count.
+#[derive(Debug, Clone, PartialEq)]
 pub(crate) struct ShellTally {
     chi: Vec<i64>,
     defective: Vec<bool>,
+    boxes: Vec<[DVec3; 2]>,
+    vertices: usize,
 }
 
+/// Most shells for which every chunk of vertices keeps its own per-shell tallies (in parallel);
+/// beyond that one serial pass.
+const PARALLEL_SHELLS: usize = 256;
+
+/// Vertices per parallel work item.
+const CHUNK: usize = 1 << 14;
+
 impl ShellTally {
-    /// Sums the vertices' shares: `shares[v]` is vertex `v`'s share of `V − E + F` and whether it
-    /// or one of its edges is a defect.
-    pub(crate) fn new(shells: &Shells, shares: &[(i32, bool)]) -> Self {
+    /// Sums the vertices' shares (`shares[v]`: vertex `v`'s share of `V − E + F` and whether it
+    /// or one of its edges is a defect) and boxes the shells' vertices (`positions`). Sums of
+    /// integers, minima and maxima: the same on any thread count.
+    pub(crate) fn new(shells: &Shells, shares: &[(i32, bool)], positions: &[DVec3]) -> Self {
         let n = shells.count();
-        let mut tally = Self {
+        let tally_of = |first: usize, shares: &[(i32, bool)]| {
+            let mut tally = Self::empty(n);
+            for (offset, &(chi, defective)) in shares.iter().enumerate() {
+                let v = first + offset;
+                if let Some(s) = shells.of_vertex(v) {
+                    tally.chi[s] += i64::from(chi);
+                    tally.defective[s] |= defective;
+                    let b = &mut tally.boxes[s];
+                    b[0] = b[0].min(positions[v]);
+                    b[1] = b[1].max(positions[v]);
+                    tally.vertices += 1;
+                }
+            }
+            tally
+        };
+        if n > PARALLEL_SHELLS {
+            return tally_of(0, shares);
+        }
+        shares
+            .par_chunks(CHUNK)
+            .enumerate()
+            .map(|(i, chunk)| tally_of(i * CHUNK, chunk))
+            .reduce(|| Self::empty(n), Self::absorb)
+    }
+
+    /// No shell counted yet, for `n` shells.
+    fn empty(n: usize) -> Self {
+        Self {
             chi: vec![0; n],
             defective: vec![false; n],
-        };
-        for (v, &(chi, defective)) in shares.iter().enumerate() {
-            if let Some(s) = shells.of_vertex(v) {
-                tally.chi[s] += i64::from(chi);
-                tally.defective[s] |= defective;
-            }
+            boxes: vec![[DVec3::INFINITY, DVec3::NEG_INFINITY]; n],
+            vertices: 0,
         }
-        tally
+    }
+
+    /// Adds `other`'s tallies to `self`'s.
+    fn absorb(mut self, other: Self) -> Self {
+        for s in 0..self.chi.len() {
+            self.chi[s] += other.chi[s];
+            self.defective[s] |= other.defective[s];
+            self.boxes[s][0] = self.boxes[s][0].min(other.boxes[s][0]);
+            self.boxes[s][1] = self.boxes[s][1].max(other.boxes[s][1]);
+        }
+        self.vertices += other.vertices;
+        self
     }
 
     /// The genus of every shell that is a closed oriented manifold, `None` for the others.
@@ -111,11 +181,22 @@ impl ShellTally {
             })
             .collect()
     }
+
+    /// Each shell's bounding box, in shell order.
+    pub(crate) fn into_boxes(self) -> Vec<[DVec3; 2]> {
+        self.boxes
+    }
+
+    /// The referenced vertices.
+    pub(crate) fn vertices(&self) -> usize {
+        self.vertices
+    }
 }
 
 #[cfg(test)]
 mod tests {
     use super::{AtomicUnionFind, ShellTally, Shells, Stars};
+    use glam::DVec3;
 
     /// The shells of `tris` with every triangle's vertices joined.
     fn shells(tris: &[[u32; 3]], vertex_count: usize) -> Shells {
@@ -142,9 +223,12 @@ mod tests {
     }
 
     #[test]
-    fn tally_gives_genus_only_for_sound_shells() {
+    fn tally_gives_genus_only_for_sound_shells_and_boxes_them() {
         let tris = [[0, 1, 2], [3, 4, 5]];
         let shells = shells(&tris, 6);
+        let positions: Vec<DVec3> = (0..6)
+            .map(|v| DVec3::new(v as f64, -(v as f64), 0.5 * v as f64))
+            .collect();
         // Shell 0: χ = 2 (a sphere's); shell 1: χ = 1 (odd: not a closed surface).
         let shares = [
             (2, false),
@@ -154,9 +238,13 @@ mod tests {
             (0, false),
             (0, false),
         ];
+        let tally = ShellTally::new(&shells, &shares, &positions);
+        assert_eq!(tally.genus(), vec![Some(0), None]);
+        assert_eq!(tally.vertices(), 6);
+        let boxes = tally.into_boxes();
         assert_eq!(
-            ShellTally::new(&shells, &shares).genus(),
-            vec![Some(0), None]
+            boxes[1],
+            [DVec3::new(3.0, -5.0, 1.5), DVec3::new(5.0, -3.0, 2.5)]
         );
         let flagged = [
             (2, false),
@@ -166,9 +254,7 @@ mod tests {
             (0, false),
             (0, false),
         ];
-        assert_eq!(
-            ShellTally::new(&shells, &flagged).genus(),
-            vec![None, Some(0)]
-        );
+        let tally = ShellTally::new(&shells, &flagged, &positions);
+        assert_eq!(tally.genus(), vec![None, Some(0)]);
     }
 }

@@ -144,12 +144,13 @@ impl Survey {
 /// triangle's next vertex, so the next vertices suffice.
 fn join_edges(sets: &AtomicUnionFind, v: u32, star: &[[u32; 2]], local: &Local) {
     let clean = local.fans == 1 && !local.defective();
-    for &[b, a] in star {
-        if b > v {
-            sets.union(v as usize, b as usize);
-        }
-        if !clean && a > v {
-            sets.union(v as usize, a as usize);
-        }
+    let larger = |x: u32| (x > v).then_some(x as usize);
+    if clean {
+        sets.union_all(v as usize, star.iter().filter_map(|l| larger(l[0])));
+    } else {
+        sets.union_all(
+            v as usize,
+            star.as_flattened().iter().filter_map(|&x| larger(x)),
+        );
     }
 }

@@ -277,3 +277,53 @@ fn sound_solids_match_the_reference() {
     assert_eq!(reported(&report), reference(&mesh));
     assert_eq!(report.genus_per_shell, vec![Some(1), Some(0), Some(1)]);
 }
+
+/// `count` unit tetrahedra, tetrahedron `s` moved to `x = 2s`, with their triangles interleaved
+/// (all first triangles, then all second ones, …) and their vertices numbered in reverse, so
+/// that triangle order, vertex order and thread chunks all disagree; then `tail` (whose vertices
+/// follow).
+fn interleaved_tetrahedra(count: usize, tail: &IndexedMesh) -> IndexedMesh {
+    let tet = super::test_meshes::tetrahedron();
+    let mut positions = vec![DVec3::ZERO; 4 * count];
+    for s in 0..count {
+        let base = 4 * (count - 1 - s);
+        for (k, p) in tet.positions.iter().enumerate() {
+            positions[base + k] = *p + DVec3::X * (2 * s) as f64;
+        }
+    }
+    let mut triangles = Vec::new();
+    for t in &tet.triangles {
+        for s in 0..count {
+            let base = (4 * (count - 1 - s)) as u32;
+            triangles.push(t.map(|i| i + base));
+        }
+    }
+    let offset = positions.len() as u32;
+    positions.extend(&tail.positions);
+    triangles.extend(tail.triangles.iter().map(|t| t.map(|i| i + offset)));
+    IndexedMesh::new(positions, triangles)
+}
+
+#[test]
+fn many_shells_are_numbered_by_first_triangle_across_chunks() {
+    // 200 shells and a large torus (parallel per-shell tallies, several triangle chunks), and
+    // 40 000 shells (serial tallies).
+    for (count, tail) in [(200, torus(220, 100)), (40_000, cube())] {
+        let mesh = interleaved_tetrahedra(count, &tail);
+        for threads in [1, 3] {
+            let pool = rayon::ThreadPoolBuilder::new()
+                .num_threads(threads)
+                .build()
+                .unwrap();
+            let r = pool.install(|| TopologyReport::of(&mesh));
+            assert_eq!(r.shells, count + 1);
+            assert!(r.genus_per_shell[..count].iter().all(|&g| g == Some(0)));
+            assert!(r.is_closed_manifold());
+            assert_eq!(r.vertices, mesh.positions.len());
+            for (s, b) in r.shell_boxes[..count].iter().enumerate() {
+                assert_eq!(b[0], DVec3::X * (2 * s) as f64, "shell {s}");
+                assert_eq!(b[1], DVec3::X * (2 * s) as f64 + DVec3::ONE, "shell {s}");
+            }
+        }
+    }
+}
