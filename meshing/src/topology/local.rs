@@ -23,19 +23,52 @@ use super::edges::EdgeKind;
 /// The most triangles a star may have for the allocation-free walk (one bit each).
 const WALK_LIMIT: usize = 64;
 
+/// Counts of undirected edges by kind (a vertex's edges to larger vertices, or a whole mesh's).
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub(crate) struct EdgeCounts {
+    /// All edges.
+    pub(crate) edges: usize,
+    /// Edges used by one triangle only.
+    pub(crate) boundary: usize,
+    /// Edges used by more than two triangles.
+    pub(crate) non_manifold: usize,
+    /// Edges used twice in the same direction.
+    pub(crate) inconsistent: usize,
+}
+
+impl EdgeCounts {
+    /// Counts one edge of `kind`.
+    fn count(&mut self, kind: EdgeKind) {
+        self.edges += 1;
+        match kind {
+            EdgeKind::Manifold => {}
+            EdgeKind::Boundary => self.boundary += 1,
+            EdgeKind::Inconsistent => self.inconsistent += 1,
+            EdgeKind::NonManifold => self.non_manifold += 1,
+        }
+    }
+
+    /// Adds `other`'s counts.
+    pub(crate) fn add(&mut self, other: &Self) {
+        self.edges += other.edges;
+        self.boundary += other.boundary;
+        self.non_manifold += other.non_manifold;
+        self.inconsistent += other.inconsistent;
+    }
+
+    /// True when some edge is not manifold.
+    fn defective(&self) -> bool {
+        self.boundary + self.non_manifold + self.inconsistent > 0
+    }
+}
+
 /// What the star of one vertex says.
 #[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
 pub(crate) struct Local {
     /// `1 − (edges to larger vertices) + (triangles whose smallest vertex this is)`.
     pub(crate) chi: i64,
-    /// Edges to larger vertices.
-    pub(crate) edges: usize,
-    /// Edges to larger vertices used by one triangle only.
-    pub(crate) boundary: usize,
-    /// Edges to larger vertices used by more than two triangles.
-    pub(crate) non_manifold: usize,
-    /// Edges to larger vertices used twice in the same direction.
-    pub(crate) inconsistent: usize,
+    /// The edges to larger vertices.
+    pub(crate) counts: EdgeCounts,
     /// Fans around the vertex (0 when unused).
     pub(crate) fans: usize,
 }
@@ -44,7 +77,7 @@ impl Local {
     /// True when the vertex or one of its edges to larger vertices is a defect (the shell then
     /// has no genus).
     pub(crate) fn defective(&self) -> bool {
-        self.fans > 1 || self.boundary + self.non_manifold + self.inconsistent > 0
+        self.fans > 1 || self.counts.defective()
     }
 }
 
@@ -97,17 +130,11 @@ pub(crate) fn analyse(
             (out, inn) if out + inn == 2 => EdgeKind::Inconsistent,
             _ => EdgeKind::NonManifold,
         };
-        local.edges += 1;
-        match kind {
-            EdgeKind::Manifold => {}
-            EdgeKind::Boundary => local.boundary += 1,
-            EdgeKind::Inconsistent => local.inconsistent += 1,
-            EdgeKind::NonManifold => local.non_manifold += 1,
-        }
+        local.counts.count(kind);
         edge(x, kind);
     }
     local.fans = fans(star, neighbours, parent);
-    local.chi = 1 - to_i64(local.edges) + to_i64(faces);
+    local.chi = 1 - to_i64(local.counts.edges) + to_i64(faces);
     local
 }
 
@@ -158,9 +185,11 @@ fn closed_fan(v: u32, star: &[[u32; 2]]) -> Option<Local> {
     }
     Some(Local {
         chi: 1 - to_i64(edges) + to_i64(faces),
-        edges,
+        counts: EdgeCounts {
+            edges,
+            ..EdgeCounts::default()
+        },
         fans: 1,
-        ..Local::default()
     })
 }
 
@@ -239,7 +268,10 @@ mod tests {
     fn closed_fan_takes_the_fast_path() {
         // Vertex 0 of an octahedron-like fan 1..4: triangles [0,1,2], [0,2,3], [0,3,4], [0,4,1].
         let (local, kinds) = run(0, &[[1, 2], [2, 3], [3, 4], [4, 1]]);
-        assert_eq!((local.fans, local.edges, local.chi), (1, 4, 1 - 4 + 4));
+        assert_eq!(
+            (local.fans, local.counts.edges, local.chi),
+            (1, 4, 1 - 4 + 4)
+        );
         assert!(!local.defective() && kinds.is_empty());
     }
 
@@ -247,7 +279,7 @@ mod tests {
     fn two_fans_at_a_tip_and_a_flipped_triangle() {
         // Two closed fans around vertex 0 (1,2,3 and 4,5,6): a non-manifold vertex.
         let (local, _) = run(0, &[[1, 2], [2, 3], [3, 1], [4, 5], [5, 6], [6, 4]]);
-        assert_eq!((local.fans, local.edges), (2, 6));
+        assert_eq!((local.fans, local.counts.edges), (2, 6));
         assert!(local.defective());
         // One triangle flipped: edges {0,1} and {0,3} are used twice the same way... and {0,2}
         // once each way.
@@ -261,22 +293,22 @@ mod tests {
                 (3, EdgeKind::Inconsistent)
             ]
         );
-        assert_eq!((local.inconsistent, local.boundary), (2, 0));
+        assert_eq!((local.counts.inconsistent, local.counts.boundary), (2, 0));
     }
 
     #[test]
     fn open_fan_and_a_fin() {
         // An open fan 1-2-3: edges {0,1} and {0,3} are boundary edges.
         let (local, kinds) = run(0, &[[1, 2], [2, 3]]);
-        assert_eq!((local.fans, local.boundary), (1, 2));
+        assert_eq!((local.fans, local.counts.boundary), (1, 2));
         assert_eq!(kinds[1], (2, EdgeKind::Manifold));
         // Three triangles on edge {0,1}: non-manifold; seen from vertex 5 edges to 0 and 1 are
         // not counted (smaller), and the edge to 7 is.
         let (local, kinds) = run(0, &[[1, 2], [3, 1], [1, 4]]);
         assert_eq!(kinds[0], (1, EdgeKind::NonManifold));
-        assert_eq!(local.non_manifold, 1);
+        assert_eq!(local.counts.non_manifold, 1);
         let (local, kinds) = run(5, &[[0, 1], [1, 7]]);
         assert_eq!(kinds, vec![(7, EdgeKind::Boundary)]);
-        assert_eq!((local.edges, local.chi), (1, 1 - 1));
+        assert_eq!((local.counts.edges, local.chi), (1, 1 - 1));
     }
 }

@@ -244,7 +244,8 @@ impl TopologyReport {
             Vec::new()
         };
         let genus = total_genus(&genus_per_shell);
-        let (edges, faces) = (survey.edges, tris.len());
+        let counts = survey.counts;
+        let (edges, faces) = (counts.edges, tris.len());
         Self {
             vertices,
             edges,
@@ -253,13 +254,13 @@ impl TopologyReport {
             shells: shells.count(),
             genus,
             genus_per_shell,
-            boundary_edges: survey.boundary,
-            non_manifold_edges: survey.non_manifold,
+            boundary_edges: counts.boundary,
+            non_manifold_edges: counts.non_manifold,
             non_manifold_vertices: survey.non_manifold_vertices,
-            inconsistent_edges: survey.inconsistent,
-            oriented: survey.inconsistent == 0,
-            closed: survey.boundary == 0 && faces > 0,
-            manifold: survey.non_manifold == 0 && survey.non_manifold_vertices == 0,
+            inconsistent_edges: counts.inconsistent,
+            oriented: counts.inconsistent == 0,
+            closed: counts.boundary == 0 && faces > 0,
+            manifold: counts.non_manifold == 0 && survey.non_manifold_vertices == 0,
             degenerate_faces: measures.degenerate,
             unreferenced_vertices: vertex_count - vertices,
             volume: measures.volume,

@@ -10,7 +10,7 @@ use rayon::prelude::*;
 
 use super::atomic_union_find::AtomicUnionFind;
 use super::edges::EdgeKind;
-use super::local::{Local, Scratch, analyse};
+use super::local::{EdgeCounts, Local, Scratch, analyse};
 use super::shells::Shells;
 use super::stars::Stars;
 use super::{MAX_EXAMPLES, Offenders, push_example};
@@ -28,11 +28,8 @@ pub(crate) struct Survey {
     /// Each vertex's share of `V − E + F` and whether it or an edge to a larger vertex is a
     /// defect.
     pub(crate) shares: Vec<(i32, bool)>,
-    /// Undirected edges, boundary, non-manifold and inconsistent ones.
-    pub(crate) edges: usize,
-    pub(crate) boundary: usize,
-    pub(crate) non_manifold: usize,
-    pub(crate) inconsistent: usize,
+    /// Undirected edges by kind.
+    pub(crate) counts: EdgeCounts,
     /// Vertices with more than one fan.
     pub(crate) non_manifold_vertices: usize,
     /// The first examples of the edge and vertex defects.
@@ -42,10 +39,7 @@ pub(crate) struct Survey {
 /// Counts of one chunk of vertices.
 #[derive(Debug, Default)]
 struct Partial {
-    edges: usize,
-    boundary: usize,
-    non_manifold: usize,
-    inconsistent: usize,
+    counts: EdgeCounts,
     non_manifold_vertices: usize,
     examples: Offenders,
 }
@@ -53,10 +47,7 @@ struct Partial {
 impl Partial {
     /// Appends `other` (a later chunk) to `self`.
     fn absorb(mut self, other: Self) -> Self {
-        self.edges += other.edges;
-        self.boundary += other.boundary;
-        self.non_manifold += other.non_manifold;
-        self.inconsistent += other.inconsistent;
+        self.counts.add(&other.counts);
         self.non_manifold_vertices += other.non_manifold_vertices;
         let (mine, theirs) = (&mut self.examples, other.examples);
         for (list, more) in [
@@ -76,10 +67,7 @@ impl Partial {
 
     /// Adds one vertex's findings.
     fn add(&mut self, v: u32, local: &Local) {
-        self.edges += local.edges;
-        self.boundary += local.boundary;
-        self.non_manifold += local.non_manifold;
-        self.inconsistent += local.inconsistent;
+        self.counts.add(&local.counts);
         if local.fans > 1 {
             self.non_manifold_vertices += 1;
             push_example(&mut self.examples.non_manifold_vertices, v);
@@ -130,10 +118,7 @@ impl Survey {
             stars,
             shells,
             shares,
-            edges: total.edges,
-            boundary: total.boundary,
-            non_manifold: total.non_manifold,
-            inconsistent: total.inconsistent,
+            counts: total.counts,
             non_manifold_vertices: total.non_manifold_vertices,
             examples: total.examples,
         }
