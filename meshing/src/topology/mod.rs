@@ -3,11 +3,14 @@
 //! degenerate faces) and measures (volume, area, bounding box).
 //!
 //! The report is computed directly from an [`IndexedMesh`], not through the half-edge mesh, so it
-//! works on any input, however broken. Every step is iterative and at worst O(n log n): directed
-//! edges are sorted by undirected key (`edges.rs`), shells and vertex fans use a concurrent
-//! union-find whose roots are each set's smallest element (`atomic_union_find.rs`, so the result
-//! does not depend on the threads; `shells.rs`, `vertices.rs`), and the measures run in
-//! deterministic parallel chunks (`measures.rs`).
+//! works on any input, however broken. Every step is iterative and at worst O(n log n): the
+//! triangles are filed under their vertices (`stars.rs`, a counting sort); each vertex's star
+//! gives the kinds of its edges to larger vertices, its fans and its share of the Euler
+//! characteristic (`local.rs`), in parallel over vertices (`survey.rs`); shells join the ends of
+//! every edge in a concurrent union-find whose roots are each set's smallest element
+//! (`atomic_union_find.rs`, `shells.rs`), and the measures run in parallel chunks of triangles
+//! (`measures.rs`); every sum is combined in a fixed order, so the result does not depend on the
+//! threads.
 //!
 //! # Unusable triangles
 //!
