@@ -4,10 +4,7 @@
 //! one on the sphere blue, the inner colour wins, the geometry is the uncoloured file's bit for
 //! bit, and `--no-colors` writes exactly the uncoloured files.
 
-#[allow(dead_code)] // its GLB reader reads one primitive; the library's reads them all
-mod export_readers;
-
-use export_readers::{read_3mf, unzip};
+use crate::export_readers::{read_3mf, unzip};
 use glam::DVec3;
 use solidkit_meshing::IndexedMesh;
 use solidkit_tests::{fixture, path_str, run_cli, success_json};

@@ -22,7 +22,7 @@
 //! ```text
 //! cargo build --release -p solidkit && cp target/release/solidkit /tmp/solidkit-fuzz
 //! SOLIDKIT_FUZZ_BIN=/tmp/solidkit-fuzz SOLIDKIT_FUZZ_TREES=200000 SOLIDKIT_FUZZ_SEED=2026 \
-//!     SOLIDKIT_FUZZ_SECONDS=1800 cargo test --release -p solidkit --test cli_hostile_fuzz \
+//!     SOLIDKIT_FUZZ_SECONDS=1800 cargo test --release -p solidkit --test cli_suite cli_hostile_fuzz \
 //!     -- --nocapture
 //! ```
 //!

@@ -6,9 +6,7 @@
 //! reports exactly the listed defects in every format; 3MF and GLB files round-trip through the
 //! small readers of `export_readers.rs`.
 
-mod export_readers;
-
-use export_readers::{read_3mf, read_glb};
+use crate::export_readers::{read_3mf, read_glb};
 use glam::DVec3;
 use serde_json::Value;
 use solidkit_meshing::io::read_mesh;
