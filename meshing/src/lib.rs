@@ -62,6 +62,6 @@ pub mod suites;
 pub mod topology;
 
 pub use halfedge::HalfEdgeMesh;
-pub use sink::MeshSink;
+pub use sink::{MeshSink, VertexIds};
 pub use solidkit_kernel::IndexedMesh;
 pub use topology::{ReportOptions, SelfIntersectionsMethod, TopologyReport};

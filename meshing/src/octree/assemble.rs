@@ -16,6 +16,7 @@ use crate::grid::GridSpec;
 use crate::sink::MeshSink;
 use rayon::prelude::*;
 use std::collections::HashMap;
+use std::ops::Range;
 
 /// Finds a brick by its coordinates: a dense table when small enough, else a hash map.
 enum BrickIndex {
@@ -75,40 +76,86 @@ pub(crate) fn assemble(
     let dims = cells.map(|c| c.div_ceil(brick).max(1));
     let index = BrickIndex::new(&bricks, dims);
     let rows = BrickRows::new(&bricks, dims);
-    // Vertex numbering: the base index of every owned edge row of every brick.
+    let extents: Vec<[usize; 3]> = bricks.iter().map(|o| o.extent).collect();
+    // The dense order runs through the brick layers (same `z` brick coordinate) one after the
+    // other, and each layer's bricks are consecutive in `bricks`: every layer is numbered, filled
+    // and emitted on its own, in parallel, from its own start.
+    let layers = Layers::new(&bricks, dims, brick, cells);
+    // Vertex numbering: the base index of every owned edge row of every brick, counted within
+    // its layer, then moved by the vertices of the layers before it.
     let mut bases: Vec<Vec<u32>> = bricks.iter().map(|o| vec![0; o.edge_rows.len()]).collect();
-    let mut order: Vec<(usize, usize)> = Vec::new(); // (brick, row) in global order
-    let mut count = 0u32;
-    for k in 0..=cells[2] {
-        let (bk, kl) = owner(k, brick, dims[2]);
-        for j in 0..=cells[1] {
-            let (bj, jl) = owner(j, brick, dims[1]);
-            for b in rows.get(bk, bj) {
-                let o = &bricks[b];
-                if kl >= o.owned[2] || jl >= o.owned[1] {
-                    continue;
+    let edge_rows: Vec<(Vec<(u32, u32)>, usize)> = layers
+        .split(&mut bases)
+        .into_par_iter()
+        .enumerate()
+        .map(|(bk, layer_bases)| {
+            let first = layers.bricks[bk].start;
+            let mut order = Vec::new(); // (brick, row) in the dense order
+            let mut count = 0u32;
+            for k in layers.sample_rows(bk) {
+                let kl = k - bk * brick;
+                for j in 0..=cells[1] {
+                    let (bj, jl) = owner(j, brick, dims[1]);
+                    for b in rows.get(bk, bj) {
+                        let o = &bricks[b];
+                        if kl >= o.owned[2] || jl >= o.owned[1] {
+                            continue;
+                        }
+                        let r = kl * o.owned[1] + jl;
+                        layer_bases[b - first][r] = count;
+                        count += o.edge_rows[r + 1] - o.edge_rows[r];
+                        order.push((b as u32, r as u32));
+                    }
                 }
-                let r = kl * o.owned[1] + jl;
-                bases[b][r] = count;
-                count += o.edge_rows[r + 1] - o.edge_rows[r];
-                order.push((b, r));
             }
-        }
-    }
-    let edge_vertices = count;
+            (order, count as usize)
+        })
+        .collect();
+    let edge_counts: Vec<usize> = edge_rows.iter().map(|e| e.1).collect();
+    let edge_starts = starts(&edge_counts, 0);
+    layers
+        .split(&mut bases)
+        .into_par_iter()
+        .zip(&edge_starts)
+        .for_each(|(layer_bases, &first)| {
+            for v in layer_bases.iter_mut().flatten() {
+                *v += first;
+            }
+        });
+    let edge_vertices = edge_counts.iter().sum::<usize>() as u32;
     // Centre vertices follow, by cell row.
     let mut centre_bases: Vec<Vec<u32>> = triangles
         .iter()
         .map(|t| vec![0; t.centre_rows.len()])
         .collect();
-    let extents: Vec<[usize; 3]> = bricks.iter().map(|o| o.extent).collect();
-    for (b, r) in cell_rows(cells, brick, &rows, &extents) {
-        let t = &triangles[b];
-        if !t.centre_rows.is_empty() {
-            centre_bases[b][r] = count;
-            count += t.centre_rows[r + 1] - t.centre_rows[r];
-        }
-    }
+    let centre_counts: Vec<usize> = layers
+        .split(&mut centre_bases)
+        .into_par_iter()
+        .enumerate()
+        .map(|(bk, layer_bases)| {
+            let first = layers.bricks[bk].start;
+            let mut count = 0u32;
+            layers.cell_rows(bk, &rows, &extents, |b, r| {
+                let t = &triangles[b];
+                if !t.centre_rows.is_empty() {
+                    layer_bases[b - first][r] = count;
+                    count += t.centre_rows[r + 1] - t.centre_rows[r];
+                }
+            });
+            count as usize
+        })
+        .collect();
+    let centre_starts = starts(&centre_counts, edge_vertices);
+    layers
+        .split(&mut centre_bases)
+        .into_par_iter()
+        .zip(&centre_starts)
+        .for_each(|(layer_bases, &first)| {
+            for v in layer_bases.iter_mut().flatten() {
+                *v += first;
+            }
+        });
+    let mut count = edge_vertices + centre_counts.iter().sum::<usize>() as u32;
     // Triangle corners to vertex numbers, brick by brick in parallel, consuming the local lists.
     // A per-thread table maps the brick's own edge ids to numbers; neighbours are searched.
     // Corners on an edge no neighbour lists (see the module docs) are `ORPHAN | i`, the `i`-th
@@ -168,56 +215,176 @@ pub(crate) fn assemble(
     let mut orphan_keys: Vec<u64> = resolved.iter().flat_map(|r| r.4.iter().copied()).collect();
     orphan_keys.sort_unstable();
     orphan_keys.dedup();
-    let orphan_base = count;
     count += orphan_keys.len() as u32;
     sink.reserve(count as usize, resolved.iter().map(|r| r.0.len()).sum());
-    let mut ids = Vec::with_capacity(count as usize);
-    for &(b, r) in &order {
-        let o = &bricks[b];
-        let span = o.edge_rows[r] as usize..o.edge_rows[r + 1] as usize;
-        ids.extend(
-            o.edges[span]
-                .iter()
-                .map(|e| sink.add_vertex(e.1.as_dvec3())),
-        );
-    }
-    debug_assert_eq!(ids.len(), edge_vertices as usize);
-    drop((bricks, bases, order, index));
-    for (b, r) in cell_rows(cells, brick, &rows, &extents) {
-        let (_, _, centres, centre_rows, _) = &resolved[b];
-        if !centre_rows.is_empty() {
-            let span = centre_rows[r] as usize..centre_rows[r + 1] as usize;
-            ids.extend(centres[span].iter().map(|p| sink.add_vertex(p.as_dvec3())));
+    // The vertices, layer by layer in parallel: edge vertices, centres, then orphans.
+    let edge_ids = sink.add_vertex_blocks(&edge_counts, &|bk, out| {
+        let mut at = 0;
+        for &(b, r) in &edge_rows[bk].0 {
+            let o = &bricks[b as usize];
+            let r = r as usize;
+            let row = &o.edges[o.edge_rows[r] as usize..o.edge_rows[r + 1] as usize];
+            for (slot, e) in out[at..at + row.len()].iter_mut().zip(row) {
+                *slot = e.1.as_dvec3();
+            }
+            at += row.len();
         }
-    }
-    ids.extend(orphan_keys.iter().map(|&key| {
-        let (g, axis) = unpack_edge(key);
-        let mut p = spec.point(g[0], g[1], g[2]);
-        p[axis] += 0.5 * spec.cell;
-        sink.add_vertex(p)
-    }));
-    // A sink that numbers vertices in the order given (an `IndexedMesh`) takes a row's
-    // triangles as they are.
-    let identity = ids.iter().enumerate().all(|(i, &v)| v as usize == i);
-    for (b, r) in cell_rows(cells, brick, &rows, &extents) {
-        let (tris, tri_rows, _, _, orphans) = &resolved[b];
-        let row = &tris[tri_rows[r] as usize..tri_rows[r + 1] as usize];
-        if identity && orphans.is_empty() {
-            sink.add_triangles(row);
-            continue;
-        }
-        for t in row {
-            sink.add_triangle(t.map(|v| {
-                if v & ORPHAN == 0 {
-                    return ids[v as usize];
+    });
+    drop((bricks, bases, edge_rows, index));
+    let centre_ids = sink.add_vertex_blocks(&centre_counts, &|bk, out| {
+        let mut at = 0;
+        layers.cell_rows(bk, &rows, &extents, |b, r| {
+            let (_, _, centres, centre_rows, _) = &resolved[b];
+            if !centre_rows.is_empty() {
+                let row = &centres[centre_rows[r] as usize..centre_rows[r + 1] as usize];
+                for (slot, p) in out[at..at + row.len()].iter_mut().zip(row) {
+                    *slot = p.as_dvec3();
                 }
-                let key = orphans[(v & !ORPHAN) as usize];
-                let at = orphan_keys.binary_search(&key).unwrap_or_default();
-                ids[(orphan_base as usize) + at]
-            }));
+                at += row.len();
+            }
+        });
+    });
+    let orphan_ids: Vec<u32> = orphan_keys
+        .iter()
+        .map(|&key| {
+            let (g, axis) = unpack_edge(key);
+            let mut p = spec.point(g[0], g[1], g[2]);
+            p[axis] += 0.5 * spec.cell;
+            sink.add_vertex(p)
+        })
+        .collect();
+    // Vertex `v` in this function's numbering to the sink's id.
+    let id = |v: u32| {
+        if v < edge_vertices {
+            edge_ids.get(v)
+        } else {
+            centre_ids.get(v - edge_vertices)
+        }
+    };
+    let identity = edge_ids.counts_from(0) && centre_ids.counts_from(edge_vertices);
+    // The triangles, layer by layer in parallel; a brick's rows are copied as they are when the
+    // sink numbers as this function does and the brick has no orphan corners.
+    let triangle_counts: Vec<usize> = (0..layers.len())
+        .into_par_iter()
+        .map(|bk| {
+            let mut n = 0;
+            layers.cell_rows(bk, &rows, &extents, |b, r| {
+                let tri_rows = &resolved[b].1;
+                n += (tri_rows[r + 1] - tri_rows[r]) as usize;
+            });
+            n
+        })
+        .collect();
+    sink.add_triangle_blocks(&triangle_counts, &|bk, out| {
+        let mut at = 0;
+        layers.cell_rows(bk, &rows, &extents, |b, r| {
+            let (tris, tri_rows, _, _, orphans) = &resolved[b];
+            let row = &tris[tri_rows[r] as usize..tri_rows[r + 1] as usize];
+            let out = &mut out[at..at + row.len()];
+            at += row.len();
+            if identity && orphans.is_empty() {
+                out.copy_from_slice(row);
+                return;
+            }
+            for (slot, t) in out.iter_mut().zip(row) {
+                *slot = t.map(|v| {
+                    if v & ORPHAN == 0 {
+                        return id(v);
+                    }
+                    let key = orphans[(v & !ORPHAN) as usize];
+                    orphan_ids[orphan_keys.binary_search(&key).unwrap_or_default()]
+                });
+            }
+        });
+    });
+    orphan_keys.len()
+}
+
+/// Exclusive prefix sums of `counts` from `from`.
+fn starts(counts: &[usize], from: u32) -> Vec<u32> {
+    counts
+        .iter()
+        .scan(from, |next, &n| {
+            let at = *next;
+            *next += n as u32;
+            Some(at)
+        })
+        .collect()
+}
+
+/// The brick layers (bricks with the same `z` brick coordinate): their ranges in the sorted
+/// brick list and the grid rows they cover.
+struct Layers {
+    /// The bricks of each layer.
+    bricks: Vec<Range<usize>>,
+    brick: usize,
+    cells: [usize; 3],
+}
+
+impl Layers {
+    fn new(bricks: &[BrickEdges], dims: [usize; 3], brick: usize, cells: [usize; 3]) -> Self {
+        let ranges = (0..dims[2])
+            .map(|bk| {
+                bricks.partition_point(|o| o.coord[2] < bk)
+                    ..bricks.partition_point(|o| o.coord[2] <= bk)
+            })
+            .collect();
+        Layers {
+            bricks: ranges,
+            brick,
+            cells,
         }
     }
-    orphan_keys.len()
+
+    fn len(&self) -> usize {
+        self.bricks.len()
+    }
+
+    /// `per_brick` cut into one slice per layer.
+    fn split<'a, T>(&self, per_brick: &'a mut [T]) -> Vec<&'a mut [T]> {
+        let mut rest = per_brick;
+        let mut at = 0;
+        self.bricks
+            .iter()
+            .map(|range| {
+                let (layer, tail) = std::mem::take(&mut rest).split_at_mut(range.end - at);
+                at = range.end;
+                rest = tail;
+                layer
+            })
+            .collect()
+    }
+
+    /// The sample rows `k` layer `bk` owns (the last layer owns the far face).
+    fn sample_rows(&self, bk: usize) -> Range<usize> {
+        let end = if bk + 1 == self.len() {
+            self.cells[2] + 1
+        } else {
+            (bk + 1) * self.brick
+        };
+        bk * self.brick..end
+    }
+
+    /// Calls `each(brick, local cell row kl · extent_y + jl)` for every cell row of layer `bk`
+    /// in the dense path's order (`k`, then `j`, then the bricks of the brick row in `x` order).
+    fn cell_rows(
+        &self,
+        bk: usize,
+        rows: &BrickRows,
+        extents: &[[usize; 3]],
+        mut each: impl FnMut(usize, usize),
+    ) {
+        let (brick, cells) = (self.brick, self.cells);
+        for k in bk * brick..((bk + 1) * brick).min(cells[2]) {
+            let kl = k - bk * brick;
+            for j in 0..cells[1] {
+                let jl = j % brick;
+                for b in rows.get(bk, j / brick) {
+                    each(b, kl * extents[b][1] + jl);
+                }
+            }
+        }
+    }
 }
 
 /// A local edge id with no vertex number known in [`Numbers`].
@@ -322,23 +489,6 @@ impl BrickRows {
             .iter()
             .map(|&b| b as usize)
     }
-}
-
-/// Every cell row of the grid in the dense path's order (`k`, then `j`, then the bricks of the
-/// brick row in `x` order), as (brick, the brick's local cell row `kl · extent_y + jl`).
-fn cell_rows<'a>(
-    cells: [usize; 3],
-    brick: usize,
-    rows: &'a BrickRows,
-    extents: &'a [[usize; 3]],
-) -> impl Iterator<Item = (usize, usize)> + 'a {
-    (0..cells[2]).flat_map(move |k| {
-        (0..cells[1]).flat_map(move |j| {
-            let (kl, jl) = (k % brick, j % brick);
-            rows.get(k / brick, j / brick)
-                .map(move |b| (b, kl * extents[b][1] + jl))
-        })
-    })
 }
 
 /// The number of the vertex on brick `b`'s local edge `id` when a neighbour owns it, or the
