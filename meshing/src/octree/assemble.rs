@@ -230,7 +230,15 @@ pub(crate) fn assemble(
             at += row.len();
         }
     });
-    drop((bricks, bases, edge_rows, index));
+    // Thousands of small lists: freed in parallel.
+    drop(index);
+    rayon::join(
+        || bricks.into_par_iter().for_each(drop),
+        || {
+            bases.into_par_iter().for_each(drop);
+            edge_rows.into_par_iter().for_each(drop);
+        },
+    );
     let centre_ids = sink.add_vertex_blocks(&centre_counts, &|bk, out| {
         let mut at = 0;
         layers.cell_rows(bk, &rows, &extents, |b, r| {
