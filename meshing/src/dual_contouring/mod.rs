@@ -52,9 +52,11 @@ use crate::marching_cubes::SampleGrid;
 use crate::octree::{Cancelled, MeshStats, SparseOptions, now};
 use crate::sink::MeshSink;
 use glam::DVec3;
+use rayon::prelude::*;
 use solidkit_kernel::Evaluator;
 #[cfg(doc)]
 use solidkit_kernel::Program;
+use std::sync::atomic::{AtomicBool, Ordering};
 
 /// Options of dual contouring.
 #[derive(Debug, Clone, Default)]
@@ -155,23 +157,57 @@ pub fn mesh_dc_samples<F: Evaluator>(
 
 /// Writes the referenced vertices (in id order) and the triangles.
 fn write(positions: &[DVec3], triangles: &[[u32; 3]], sink: &mut impl MeshSink) {
-    let mut used = vec![false; positions.len()];
-    for t in triangles {
-        for &v in t {
-            used[v as usize] = true;
+    /// Vertices or triangles per parallel block.
+    const BLOCK: usize = 1 << 16;
+    let used: Vec<AtomicBool> = positions.iter().map(|_| AtomicBool::new(false)).collect();
+    triangles.par_iter().flatten().for_each(|&v| {
+        used[v as usize].store(true, Ordering::Relaxed);
+    });
+    let used: Vec<bool> = used.into_iter().map(AtomicBool::into_inner).collect();
+    // Each used vertex's rank among the used ones, block by block in parallel.
+    let counts: Vec<usize> = used
+        .par_chunks(BLOCK)
+        .map(|c| c.iter().filter(|&&u| u).count())
+        .collect();
+    let mut rank = vec![u32::MAX; positions.len()];
+    let mut first = 0u32;
+    let firsts: Vec<u32> = counts
+        .iter()
+        .map(|&n| {
+            let at = first;
+            first += n as u32;
+            at
+        })
+        .collect();
+    rank.par_chunks_mut(BLOCK)
+        .zip(used.par_chunks(BLOCK))
+        .zip(&firsts)
+        .for_each(|((rank, used), &first)| {
+            let mut next = first;
+            for (r, &u) in rank.iter_mut().zip(used) {
+                if u {
+                    *r = next;
+                    next += 1;
+                }
+            }
+        });
+    sink.reserve(first as usize, triangles.len());
+    let ids = sink.add_vertex_blocks(&counts, &|b, out| {
+        let span = b * BLOCK..((b + 1) * BLOCK).min(positions.len());
+        let kept = positions[span.clone()]
+            .iter()
+            .zip(&used[span])
+            .filter_map(|(p, &u)| u.then_some(*p));
+        for (slot, p) in out.iter_mut().zip(kept) {
+            *slot = p;
         }
-    }
-    let count = used.iter().filter(|&&u| u).count();
-    sink.reserve(count, triangles.len());
-    let mut ids = vec![u32::MAX; positions.len()];
-    for (v, p) in positions.iter().enumerate() {
-        if used[v] {
-            ids[v] = sink.add_vertex(*p);
+    });
+    let lens: Vec<usize> = triangles.chunks(BLOCK).map(<[_]>::len).collect();
+    sink.add_triangle_blocks(&lens, &|b, out| {
+        for (slot, t) in out.iter_mut().zip(&triangles[b * BLOCK..]) {
+            *slot = t.map(|v| ids.get(rank[v as usize]));
         }
-    }
-    for t in triangles {
-        sink.add_triangle(t.map(|v| ids[v as usize]));
-    }
+    });
 }
 
 #[cfg(test)]

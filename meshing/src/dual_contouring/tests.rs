@@ -111,3 +111,45 @@ fn sparse_equals_dense() {
         .count();
     assert_eq!(bad, 0);
 }
+
+/// A sink numbering its vertices downwards from 10⁹ − 1 (a sink's own ids must be honoured).
+#[derive(Default)]
+struct Backwards(IndexedMesh);
+
+impl MeshSink for Backwards {
+    fn add_vertex(&mut self, p: DVec3) -> u32 {
+        self.0.positions.push(p);
+        1_000_000_000 - self.0.positions.len() as u32
+    }
+
+    fn add_triangle(&mut self, t: [u32; 3]) {
+        self.0.triangles.push(t);
+    }
+}
+
+#[test]
+fn a_sink_with_its_own_numbers_gets_the_same_mesh() {
+    // More than one block of vertices and of triangles (2¹⁶ each), and unused vertices dropped.
+    let s = Solid::sphere(1.0).union(&Solid::cuboid(DVec3::new(0.5, 1.5, 0.5)));
+    let g = grid(&s, 160);
+    let p = s.compile();
+    let (mesh, _) = mesh_dc(&p, g, &DcOptions::default()).unwrap();
+    assert!(mesh.triangles.len() > 1 << 17, "{}", mesh.triangles.len());
+    let mut other = Backwards::default();
+    mesh_dc_into(&p, g, &DcOptions::default(), &mut other).unwrap();
+    assert_eq!(other.0.positions, mesh.positions);
+    let renumbered: Vec<[u32; 3]> = other
+        .0
+        .triangles
+        .iter()
+        .map(|t| t.map(|v| 1_000_000_000 - 1 - v))
+        .collect();
+    assert_eq!(renumbered, mesh.triangles);
+    // Every vertex is used.
+    let mut used = vec![false; mesh.positions.len()];
+    mesh.triangles
+        .iter()
+        .flatten()
+        .for_each(|&v| used[v as usize] = true);
+    assert!(used.iter().all(|&u| u));
+}
