@@ -113,15 +113,7 @@ pub(crate) fn assemble(
         .collect();
     let edge_counts: Vec<usize> = edge_rows.iter().map(|e| e.1).collect();
     let edge_starts = starts(&edge_counts, 0);
-    layers
-        .split(&mut bases)
-        .into_par_iter()
-        .zip(&edge_starts)
-        .for_each(|(layer_bases, &first)| {
-            for v in layer_bases.iter_mut().flatten() {
-                *v += first;
-            }
-        });
+    layers.shift(&mut bases, &edge_starts);
     let edge_vertices = edge_counts.iter().sum::<usize>() as u32;
     // Centre vertices follow, by cell row.
     let mut centre_bases: Vec<Vec<u32>> = triangles
@@ -146,15 +138,7 @@ pub(crate) fn assemble(
         })
         .collect();
     let centre_starts = starts(&centre_counts, edge_vertices);
-    layers
-        .split(&mut centre_bases)
-        .into_par_iter()
-        .zip(&centre_starts)
-        .for_each(|(layer_bases, &first)| {
-            for v in layer_bases.iter_mut().flatten() {
-                *v += first;
-            }
-        });
+    layers.shift(&mut centre_bases, &centre_starts);
     let mut count = edge_vertices + centre_counts.iter().sum::<usize>() as u32;
     // Triangle corners to vertex numbers, brick by brick in parallel, consuming the local lists.
     // A per-thread table maps the brick's own edge ids to numbers; neighbours are searched.
@@ -361,6 +345,19 @@ impl Layers {
                 layer
             })
             .collect()
+    }
+
+    /// Adds each layer's start to the row bases of its bricks (counted from 0 within the layer),
+    /// in parallel.
+    fn shift(&self, bases: &mut [Vec<u32>], starts: &[u32]) {
+        self.split(bases)
+            .into_par_iter()
+            .zip(starts)
+            .for_each(|(layer_bases, &first)| {
+                for v in layer_bases.iter_mut().flatten() {
+                    *v += first;
+                }
+            });
     }
 
     /// The sample rows `k` layer `bk` owns (the last layer owns the far face).
