@@ -22,11 +22,19 @@ meshes that passed. A reference whose warm-up round takes longer than `--slow` s
 as many timed rounds as fit in `--slow-budget` seconds (at least one; solidkit, the denominator of
 every ratio, always gets all); the `runs` column says how many.
 
+`--check` adds `solidkit check` against admesh (issue 20): both read the same binary STL (by
+default the 1.8 M-triangle gyroid-sphere, `mesh fixtures/bench/gyroid-sphere.json --resolution
+144 --refine 1`, written once to the output folder; `--check-stl FILE` for another), whole
+processes interleaved as above: `solidkit check FILE` (with the self-intersection test),
+`solidkit check FILE --no-self-intersections` and `admesh FILE` (which computes less: no
+self-intersections, no per-shell genus). Their facet, part and volume figures are compared first.
+`--cases none` runs only that.
+
 Writes target/crosscheck/bench_peers.md (and .json with every round) and prints the table.
 Not a pytest test (pytest collects test_*.py only).
 
   target/crosscheck-venv/bin/python tests/crosscheck/bench_peers.py [--repeat 5] [--threads 1|all]
-      [--cases sphere,menger-3,gyroid-sphere:480 …] [--inner 1]
+      [--cases sphere,menger-3,gyroid-sphere:480 … | none] [--inner 1] [--check [--check-stl FILE]]
 """
 import argparse
 import dataclasses
@@ -148,6 +156,8 @@ def run_case(case, opts, log) -> dict:
 def parse_cases(text: str) -> list:
     """`MODEL:R` items (comma-separated) or model names (their default resolutions); all the
     defaults when empty."""
+    if text.strip() == "none":
+        return []
     out = []
     for item in (x.strip() for x in text.split(",") if x.strip()):
         if ":" in item:
@@ -161,6 +171,86 @@ def parse_cases(text: str) -> list:
                 raise ValueError(f"'{item}': not a default case (give MODEL:RESOLUTION)")
             out.extend(found)
     return out or list(speed_cases.DEFAULT)
+
+
+def check_stl(out_dir: Path, log) -> Path:
+    """The default STL of the `check` comparison, written once."""
+    stl = out_dir / "check-gyroid-sphere-144.stl"
+    if not stl.exists():
+        log(f"writing {stl} …")
+        r = _run([str(paths.solidkit_bin()), "mesh", str(paths.ROOT / "fixtures/bench/gyroid-sphere.json"),
+                  "--resolution", "144", "--refine", "1", "--no-self-intersections", "--no-progress",
+                  "-o", str(stl)])
+        if r.returncode != 0:
+            raise RuntimeError(f"solidkit mesh failed ({r.returncode}): {r.stderr.strip()[-500:]}")
+    return stl
+
+
+def admesh_figures(text: str) -> dict:
+    """Facets, parts and volume from admesh's report."""
+    out = {}
+    for line in text.splitlines():
+        if line.startswith("Number of facets"):
+            out["facets"] = int(line.split(":")[1].split()[0])
+        elif line.startswith("Number of parts"):
+            parts = line.split(":")
+            out["parts"] = int(parts[1].split()[0])
+            if "Volume" in line:
+                out["volume"] = float(parts[2])
+    return out
+
+
+def check_against_admesh(stl: Path, opts, log) -> dict:
+    """`solidkit check` (with and without the self-intersection test) and admesh on one STL,
+    whole processes interleaved; round 0 is a warm-up whose outputs are compared."""
+    exe = str(paths.solidkit_bin())
+    pin, threads = opts["pin"], opts["solidkit_threads"]
+    cmds = {
+        "solidkit check": pin + [exe, "--threads", threads, "check", str(stl)],
+        "solidkit check --no-self-intersections":
+            pin + [exe, "--threads", threads, "check", str(stl), "--no-self-intersections"],
+        "admesh": pin + ["admesh", str(stl)],
+    }
+    times = {name: [] for name in cmds}
+    agree, problems = {}, []
+    for k in range(opts["repeat"] + 1):
+        for name, cmd in cmds.items():
+            t0 = perf_counter()
+            r = _run(cmd)
+            dt = perf_counter() - t0
+            ok = (0,) if name == "admesh" else (0, 1)  # check: 1 when the mesh has defects
+            if r.returncode not in ok:
+                raise RuntimeError(f"{name} failed ({r.returncode}): {r.stderr.strip()[-500:]}")
+            log(f"  check / {name} round {k}: {dt:.3f} s")
+            if k > 0:
+                times[name].append(dt)
+            elif name == "admesh":
+                agree["admesh"] = admesh_figures(r.stdout)
+    rep = json.loads(_run(pin + [exe, "--threads", threads, "check", str(stl), "--json"]).stdout)
+    agree["solidkit"] = {"facets": rep["faces"], "parts": rep["shells"], "volume": rep["volume"]}
+    a, b = agree.get("admesh", {}), agree["solidkit"]
+    for key in ("facets", "parts"):
+        if a.get(key) != b[key]:
+            problems.append(f"{key}: admesh {a.get(key)}, solidkit {b[key]}")
+    if a.get("volume") is None or abs(a["volume"] - b["volume"]) > 1e-4 * abs(b["volume"]):
+        problems.append(f"volume: admesh {a.get('volume')}, solidkit {b['volume']}")
+    medians = {name: statistics.median(t) for name, t in times.items()}
+    return {"stl": str(stl), "times_s": times, "medians_s": medians, "agree": agree,
+            "problems": problems}
+
+
+def check_table(c: dict) -> list:
+    """The markdown lines of the `check` comparison."""
+    base = c["medians_s"]["admesh"]
+    lines = [f"`check` against admesh on `{Path(c['stl']).name}` "
+             f"({c['agree']['solidkit']['facets']} triangles), whole processes, medians:", "",
+             "| command | s | / admesh |", "|---|---|---|"]
+    for name, t in c["medians_s"].items():
+        lines.append(f"| `{name}` | {t:.3f} | {t / base:.2f} |")
+    lines.append("")
+    lines.append("Facets, parts and volume agree." if not c["problems"]
+                 else "Disagreements: " + "; ".join(c["problems"]))
+    return lines + [""]
 
 
 def machine_info(opts) -> dict:
@@ -213,6 +303,9 @@ def main(argv=None) -> int:
     p.add_argument("--slow", type=float, default=15.0, help="warm-up round time (s) above which a system gets fewer rounds")
     p.add_argument("--slow-budget", type=float, default=45.0, help="seconds of timed rounds for such a system")
     p.add_argument("--out", type=Path, default=None, help="output folder (default target/crosscheck)")
+    p.add_argument("--check", action="store_true", help="also time `solidkit check` against admesh on a binary STL")
+    p.add_argument("--check-stl", type=Path, default=None,
+                   help="the STL for --check (default: the 1.8 M-triangle gyroid-sphere, written once)")
     a = p.parse_args(argv)
     if not paths.solidkit_bin().exists():
         print(f"error: solidkit binary not found at {paths.solidkit_bin()} (set SOLIDKIT_BIN)", file=sys.stderr)
@@ -244,9 +337,16 @@ def main(argv=None) -> int:
         res = run_case(case, opts, log)
         results[case.name] = {"case": dataclasses.asdict(case), **res}
         summaries[case.name] = {s: speed_table.summarise(s, r) for s, r in res["rounds"].items() if r}
+    check = None
+    if a.check:
+        try:
+            stl = a.check_stl or check_stl(out_dir, log)
+            check = check_against_admesh(stl, opts, log)
+        except (RuntimeError, subprocess.TimeoutExpired, json.JSONDecodeError, KeyError) as e:
+            results["check"] = {"errors": {"check": f"{type(e).__name__}: {e}"}}
     info["load average at end"] = _load()
     elapsed = time.time() - started
-    table = speed_table.markdown(cases, summaries)
+    table = speed_table.markdown(cases, summaries) if cases else ""
     errors = [f"- {name} / {s}: {e}" for name, r in results.items() for s, e in r["errors"].items()]
     cmd = "python tests/crosscheck/bench_peers.py " + " ".join(argv if argv is not None else sys.argv[1:])
     text = "\n".join([
@@ -262,6 +362,7 @@ def main(argv=None) -> int:
         "(start, parse, mesh, topology report, exit); references: Python start, imports, setup and "
         "one (cold) build.", "",
         table,
+        *(check_table(check) if check else []),
         *(["Errors:", "", *errors, ""] if errors else []),
         "Machine:", "",
         *[f"- {k}: {v}" for k, v in info.items()],
@@ -269,9 +370,10 @@ def main(argv=None) -> int:
     ])
     _write(out_dir / "bench_peers.md", text)
     _write(out_dir / "bench_peers.json", json.dumps(
-        {"info": info, "elapsed_s": elapsed, "results": results, "summaries": summaries}, indent=1))
+        {"info": info, "elapsed_s": elapsed, "results": results, "summaries": summaries,
+         "check": check}, indent=1))
     print(text)
-    return 1 if errors else 0
+    return 1 if errors or (check and check["problems"]) else 0
 
 
 if __name__ == "__main__":
