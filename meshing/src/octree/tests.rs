@@ -264,3 +264,58 @@ fn progress_reaches_the_total() {
     assert_eq!(bricks.len(), stats.surface_bricks);
     assert!(bricks.iter().any(|p| p.done == p.total));
 }
+
+/// The assembly works per brick layer (same `z` brick coordinate): layers without bricks between
+/// and around the surfaces, a last layer cut short, one layer only, and any thread count.
+#[test]
+fn empty_and_partial_brick_layers_mesh_as_dense() {
+    let apart = Solid::sphere(0.5)
+        .translate(DVec3::new(0.0, 0.0, -2.0))
+        .union(&Solid::sphere(0.4).translate(DVec3::new(0.3, 0.0, 2.0)));
+    let p = apart.compile();
+    for res in [45, 83] {
+        let g = spec(&apart, res);
+        let dense = mesh_dense(&p, g);
+        for threads in [1, 3] {
+            let sparse = rayon::ThreadPoolBuilder::new()
+                .num_threads(threads)
+                .build()
+                .unwrap()
+                .install(|| mesh_sparse(&p, g, &SparseOptions::default()).unwrap().0);
+            assert_eq!(sparse, dense, "at {res} on {threads} threads");
+        }
+        let r = TopologyReport::of(&dense);
+        assert!(r.is_closed_manifold() && r.shells == 2, "{r:?}");
+    }
+    // A slab thinner than one brick along z: a single layer.
+    let slab = Solid::cuboid(DVec3::new(2.0, 2.0, 0.1));
+    let p = slab.compile();
+    let mut g = spec(&slab, 40);
+    g.cells[2] = g.cells[2].min(5);
+    g.origin.z = -2.5 * g.cell;
+    let dense = mesh_dense(&p, g);
+    assert!(!dense.triangles.is_empty());
+    assert_eq!(
+        mesh_sparse(&p, g, &SparseOptions::default()).unwrap().0,
+        dense
+    );
+    // A grid whose far z face cuts through the solid: crossing edges in the last sample plane,
+    // which the last layer owns.
+    let ball = Solid::sphere(1.0);
+    let p = ball.compile();
+    for res in [40, 48] {
+        let mut g = spec(&ball, res);
+        g.cells[2] = g.cells[2] * 2 / 3;
+        let dense = mesh_dense(&p, g);
+        let top = g.origin.z + g.cells[2] as f64 * g.cell;
+        assert!(
+            dense.positions.iter().any(|v| (v.z - top).abs() < 1e-6),
+            "at {res}"
+        );
+        assert_eq!(
+            mesh_sparse(&p, g, &SparseOptions::default()).unwrap().0,
+            dense,
+            "at {res}"
+        );
+    }
+}
