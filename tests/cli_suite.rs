@@ -1,6 +1,7 @@
 //! The CLI suites, one module per file, in one test binary: each runs the real `solidkit` binary
 //! (Cargo builds it first and names it in `CARGO_BIN_EXE_solidkit`, so this root is declared in
-//! `cli/Cargo.toml`). One binary instead of one per file cuts CI's release build and link time.
+//! `cli/Cargo.toml`). One binary instead of one per file: one release link instead of
+//! twenty-three.
 //!
 //! Run one suite with a filter: `cargo test --release -p solidkit --test cli_suite cli_repair::`.
 
