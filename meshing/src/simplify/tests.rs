@@ -172,7 +172,15 @@ fn turned_cubes_collapse_to_their_corners() {
         assert_valid_like(&plain, &simple);
         let field = worst_field(&simple, &cube);
         assert!(field <= tolerance, "{axis} {degrees}: {field}");
+        // The pass keeps every witness (an input vertex moved onto the surface) within the
+        // tolerance; the exact cube's corners are not witnesses, and dual contouring at 64
+        // cells leaves them up to 0.006 from its own mesh. So the cube may be farther from the
+        // result than the tolerance, by at most what it was from the input.
         let back = cube_to_mesh(&simple, turn);
-        assert!(back <= tolerance, "{axis} {degrees}: {back}");
+        let before = cube_to_mesh(&plain, turn);
+        assert!(
+            back <= tolerance + before,
+            "{axis} {degrees}: {back} (input {before})"
+        );
     }
 }
