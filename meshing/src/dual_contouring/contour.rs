@@ -8,12 +8,11 @@ use super::cells::{BlockIndex, CellRef, Cells, FaceKey};
 use super::certify::{EPS, EdgeFrame, FaceKind, RingFace, certify};
 use super::faces::{DualFace, face_vertex};
 use super::patches::{NO_PATCH, edge_number, face_segment, patch_table};
+use super::probe::{BatchScratch, Probe, evaluate};
 use crate::grid::GridSpec;
 use glam::DVec3;
 use rayon::prelude::*;
-use solidkit_kernel::Evaluator;
 
-/// One block's quads, and its polygons through split faces (with their crossing points).
 /// A block's quads, its fanned polygons, and how many of its edges got no polygon.
 type BlockPolygons = (Vec<Quad>, Vec<(Vec<Corner>, DVec3)>, usize);
 
@@ -31,39 +30,6 @@ pub(crate) struct Quad {
     pub normal: DVec3,
     /// Split along `v[1]`–`v[3]` (else along `v[0]`–`v[2]`).
     pub other_diagonal: bool,
-}
-
-/// Field values for choosing quad diagonals: `block` is the index of the block of a cell
-/// containing `p`, whose evaluator is valid there.
-pub(crate) trait Probe: Sync {
-    /// Buffers of one worker.
-    type Scratch: Default + Send;
-    /// The field at `p`.
-    fn value(&self, block: usize, p: DVec3, s: &mut Self::Scratch) -> f64;
-}
-
-/// Probes with each block's own (pruned) evaluator: `self.0[b]` is block `b`'s.
-pub(crate) struct ProgramProbe<'a, E>(pub &'a [std::sync::Arc<E>]);
-
-impl<E: Evaluator> Probe for ProgramProbe<'_, E> {
-    type Scratch = E::PointScratch;
-
-    fn value(&self, block: usize, p: DVec3, s: &mut E::PointScratch) -> f64 {
-        self.0[block].value_with(p, s)
-    }
-}
-
-/// Probes one field everywhere.
-pub(crate) struct FieldProbe<'a, F>(pub &'a F);
-
-impl<F: Evaluator> Probe for FieldProbe<'_, F> {
-    type Scratch = F::GradientScratch;
-
-    fn value(&self, _: usize, p: DVec3, s: &mut F::GradientScratch) -> f64 {
-        let (mut v, mut g) = ([0.0], [DVec3::ZERO]);
-        self.0.values_gradients(&[p], &mut v, &mut g, s);
-        v[0]
-    }
 }
 
 /// A polygon fanned from a centre vertex at the edge's crossing (a quad the certificate rejected,
@@ -112,13 +78,41 @@ pub(crate) fn assemble<P: Probe>(
     };
     let per_block: Vec<BlockPolygons> = blocks
         .par_iter()
-        .map_init(P::Scratch::default, |scratch, b| {
+        .map_init(BlockScratch::<P::Scratch>::default, |scratch, b| {
             let mut quads = Vec::with_capacity(b.edges.len());
             let mut specials = Vec::new();
             let mut dropped = 0;
+            // Every ring first; the folded quads' midpoints are then evaluated in batches.
+            scratch.rings.clear();
+            scratch.requests.clear();
             for e in &b.edges {
-                match polygon(b, e, &cells, spec, probe, scratch) {
-                    Some(Ok(q)) => quads.push(q),
+                let r = ring(b, e, &cells, spec);
+                if let Some(Ok(r)) = &r
+                    && let Some(fold) = &r.fold
+                {
+                    scratch.requests.extend(fold);
+                }
+                scratch.rings.push(r);
+            }
+            evaluate(
+                probe,
+                &scratch.requests,
+                &mut scratch.values,
+                &mut scratch.batch,
+            );
+            let mut values = scratch.values.iter();
+            for (r, e) in scratch.rings.drain(..).zip(&b.edges) {
+                match r {
+                    Some(Ok(r)) => {
+                        let fold = r.fold.map(|_| {
+                            let mut next = || values.next().expect("one value per midpoint").abs();
+                            (next(), next())
+                        });
+                        match finish(&r, fold) {
+                            Ok(q) => quads.push(q),
+                            Err(corners) => specials.push((corners, e.point)),
+                        }
+                    }
                     Some(Err(corners)) => specials.push((corners, e.point)),
                     None => dropped += 1,
                 }
@@ -172,17 +166,47 @@ pub(crate) fn assemble<P: Probe>(
     }
 }
 
-/// The polygon around owned edge `e`: `Ok` for a quad certified as two triangles, `Err` with its
-/// corners (cell vertices and any face vertices) for a fan from the crossing, `None` when a cell
-/// around it lies outside the grid.
-fn polygon<P: Probe>(
+/// Buffers of one worker of [`assemble`].
+#[derive(Default)]
+struct BlockScratch<S> {
+    rings: Vec<Option<Result<Ring, Vec<Corner>>>>,
+    requests: Vec<(usize, DVec3)>,
+    values: Vec<f64>,
+    batch: BatchScratch<S>,
+}
+
+/// A crossing edge's ring of four cells that may become a quad: everything [`finish`] needs.
+struct Ring {
+    /// The four cells (global coordinates and references), counter-clockwise from outside.
+    refs: [([usize; 3], CellRef); 4],
+    /// The crossing edge's number within each cell.
+    edge_in_cell: [u8; 4],
+    /// Each cell's offset below the edge along the two other axes.
+    around: [(usize, usize); 4],
+    faces: [RingFace; 4],
+    /// The fan's corners, should the quad be refused.
+    corners: [Corner; 8],
+    count: usize,
+    /// Vertex ids and positions.
+    ids: [u32; 4],
+    p: [DVec3; 4],
+    frame: EdgeFrame,
+    normal: DVec3,
+    /// The diagonal that agrees better with the normal.
+    other_diagonal: bool,
+    /// A folded quad's two diagonal midpoints, each with the block whose cell holds it.
+    fold: Option<[(usize, DVec3); 2]>,
+}
+
+/// The ring around owned edge `e`: `Ok` for a quad still to be certified ([`finish`]), `Err`
+/// with its corners (cell vertices and any face vertices) for a fan from the crossing, `None`
+/// when a cell around it lies outside the grid.
+fn ring(
     b: &Block,
     e: &OwnedEdge,
     cells: &Cells,
     spec: &GridSpec,
-    probe: &P,
-    scratch: &mut P::Scratch,
-) -> Option<Result<Quad, Vec<Corner>>> {
+) -> Option<Result<Ring, Vec<Corner>>> {
     let table = patch_table();
     let axis = e.axis as usize;
     let (u, v) = ((axis + 1) % 3, (axis + 2) % 3);
@@ -319,24 +343,48 @@ fn polygon<P: Probe>(
         return Some(Err(corners[..count].to_vec()));
     }
     let p = [0, 1, 2, 3].map(position);
-    let mut other_diagonal = better_by_normal(&p, e.normal);
     // A folded quad: the diagonal whose midpoint lies nearer the surface keeps the crease
-    // (sharp edges run along diagonals), unless that flips a triangle.
+    // (sharp edges run along diagonals), unless that flips a triangle ([`finish`]).
     let (m0, m1) = (0.5 * (p[0] + p[2]), 0.5 * (p[1] + p[3]));
-    if (m0 - m1).length() > FOLD * spec.cell {
-        let mut value = |m: DVec3| {
+    let fold = ((m0 - m1).length() > FOLD * spec.cell).then(|| {
+        [m0, m1].map(|m| {
             let mut c = [0, 1, 2].map(|a| ((m[a] - spec.origin[a]) / spec.cell).floor());
             c[axis] = g[axis] as f64;
             c[u] = c[u].clamp(g[u] as f64 - 1.0, g[u] as f64);
             c[v] = c[v].clamp(g[v] as f64 - 1.0, g[v] as f64);
             let c = c.map(|x| x as usize);
             let r = cells.get(c).expect("the four cells are surface cells");
-            probe.value(r.block, m, scratch).abs()
-        };
-        let (f0, f1) = (value(m0), value(m1));
+            (r.block, m)
+        })
+    });
+    Some(Ok(Ring {
+        refs,
+        edge_in_cell,
+        around,
+        faces,
+        corners,
+        count,
+        ids: [0, 1, 2, 3].map(vertex),
+        p,
+        frame,
+        normal: e.normal,
+        other_diagonal: better_by_normal(&p, e.normal),
+        fold,
+    }))
+}
+
+/// A ring's quad, split along the diagonal whose midpoint has the smaller `|field|` (`fold`, for
+/// folded quads) unless that flips a triangle, else along the one agreeing better with the
+/// normal, when the certificate shows its two triangles stay clear of every other triangle;
+/// else the fan's corners.
+fn finish(r: &Ring, fold: Option<(f64, f64)>) -> Result<Quad, Vec<Corner>> {
+    let table = patch_table();
+    let (p, [u, v, axis]) = (&r.p, r.frame.axes);
+    let mut other_diagonal = r.other_diagonal;
+    if let Some((f0, f1)) = fold {
         let flips = |t: [[usize; 3]; 2]| {
             t.iter()
-                .any(|t| agreement([p[t[0]], p[t[1]], p[t[2]]], e.normal) <= 0.0)
+                .any(|t| agreement([p[t[0]], p[t[1]], p[t[2]]], r.normal) <= 0.0)
         };
         let by_field = f1 < f0;
         let tris = |d: bool| if d { SECOND } else { FIRST };
@@ -348,13 +396,13 @@ fn polygon<P: Probe>(
     // from the crossing, which always does (see `certify`).
     // In cells with several patches the pieces must also keep to their patch's side.
     let seps = [0, 1, 2, 3].map(|k| {
-        let (_, r) = refs[k];
-        let c = table.get(r.config);
-        c.separators[c.patch_of_edge[edge_in_cell[k] as usize] as usize].as_slice()
+        let (_, c) = r.refs[k];
+        let c = table.get(c.config);
+        c.separators[c.patch_of_edge[r.edge_in_cell[k] as usize] as usize].as_slice()
     });
     let side = |k: usize, x: DVec3| {
         // Local edge coordinates to ring cell k's unit coordinates.
-        let (du, dv) = around[k];
+        let (du, dv) = r.around[k];
         let mut unit = DVec3::ZERO;
         unit[u] = x.x + du as f64;
         unit[v] = x.y + dv as f64;
@@ -366,14 +414,14 @@ fn polygon<P: Probe>(
     } else {
         None
     };
-    if certify(&p.map(|x| frame.local(x)), &faces, other_diagonal, side) {
-        Some(Ok(Quad {
-            v: [vertex(0), vertex(1), vertex(2), vertex(3)],
-            normal: e.normal,
+    if certify(&p.map(|x| r.frame.local(x)), &r.faces, other_diagonal, side) {
+        Ok(Quad {
+            v: r.ids,
+            normal: r.normal,
             other_diagonal,
-        }))
+        })
     } else {
-        Some(Err(corners[..count].to_vec()))
+        Err(r.corners[..r.count].to_vec())
     }
 }
 

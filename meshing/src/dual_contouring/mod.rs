@@ -30,8 +30,9 @@
 //!
 //! Files: `patches.rs` (cell patch table, separating planes), `qef.rs`, `crossing.rs`,
 //! `block.rs` (one brick or tile), `sources.rs` (sparse octree or dense grid), `cells.rs` (cells
-//! by global coordinates), `contour.rs` (polygons), `certify.rs` (why no triangles cross; the quad
-//! certificate), `faces.rs` (face vertices), `emit.rs` (triangles), `adapt.rs` (simplification).
+//! by global coordinates), `contour.rs` (polygons), `probe.rs` (field values at folded quads'
+//! diagonals, batched per block), `certify.rs` (why no triangles cross; the quad certificate),
+//! `faces.rs` (face vertices), `emit.rs` (triangles), `adapt.rs` (simplification).
 
 mod adapt;
 mod block;
@@ -43,6 +44,7 @@ mod crossing;
 mod emit;
 mod faces;
 mod patches;
+mod probe;
 pub(crate) mod qef;
 mod sources;
 
@@ -96,7 +98,7 @@ pub fn mesh_dc_into<E: Evaluator>(
     }
     let t = now(opts.sparse.clock.as_ref());
     let brick = opts.sparse.brick_size();
-    let probe = contour::ProgramProbe(&evaluators);
+    let probe = probe::ProgramProbe(&evaluators);
     let contour = contour::assemble(&blocks, &spec, brick, &probe);
     let mut positions = contour.positions.clone();
     let triangles = match opts.tolerance {
@@ -134,7 +136,7 @@ pub fn mesh_dc_samples<F: Evaluator>(
 ) -> IndexedMesh {
     const TILE: usize = 8;
     let blocks = sources::dense_blocks(field, samples, TILE, tolerance.is_some());
-    let contour = contour::assemble(&blocks, &samples.spec, TILE, &contour::FieldProbe(field));
+    let contour = contour::assemble(&blocks, &samples.spec, TILE, &probe::FieldProbe(field));
     let mut positions = contour.positions.clone();
     let triangles = match tolerance {
         Some(tol) => {

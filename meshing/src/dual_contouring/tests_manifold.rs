@@ -192,9 +192,10 @@ fn every_cell_pattern_in_random_neighbourhoods() {
             let samples = SampleGrid::from_values(spec, values).unwrap();
             let field = Trilinear(&samples);
             let blocks = sources::dense_blocks(&field, &samples, 8, false);
-            split_polygons += contour::assemble(&blocks, &spec, 8, &contour::FieldProbe(&field))
-                .specials
-                .len();
+            split_polygons +=
+                contour::assemble(&blocks, &spec, 8, &super::probe::FieldProbe(&field))
+                    .specials
+                    .len();
             let dc = mesh_dc_samples(&field, &samples, None);
             let mc = mesh_samples(&samples);
             if mc.triangles.is_empty() {
