@@ -118,9 +118,84 @@ impl Qef {
     }
 }
 
-/// `m⁺ rhs` with the pseudo-inverse that drops eigenvalues below [`EIGEN_CUTOFF`] times the
-/// largest, from the full eigen-decomposition.
+/// `m⁺ rhs` for the positive semi-definite `m`, with the pseudo-inverse that drops eigenvalues
+/// below [`EIGEN_CUTOFF`] times the largest.
+///
+/// From the closed-form eigenvalues: with all three kept, `m⁻¹ rhs`; with two, the third
+/// eigenvector `w` (a null vector of `m − λ₃I`) is removed from `rhs` and the system solved with
+/// `m + λ₁wwᵀ` (the same on the kept directions, and well conditioned); with one, its eigenvector
+/// (a null vector of `m − λ₁I`). Where an eigenvalue the answer depends on is too close to
+/// another for its null vector to be accurate, the Jacobi decomposition decides instead.
 fn pseudo_inverse_times(m: DMat3, rhs: DVec3) -> DVec3 {
+    let [low, mid, top] = symmetric_eigenvalues(m);
+    if !(top > 0.0 && top.is_finite()) {
+        return DVec3::ZERO;
+    }
+    let cut = EIGEN_CUTOFF * top;
+    let kept = [low, mid].iter().filter(|&&l| l.abs() > cut).count() + 1;
+    // Keep clear of the cutoff itself, where the rank (and the answer) jumps.
+    let near_cut = [low, mid]
+        .iter()
+        .any(|&l| (l.abs() - cut).abs() <= 1e-9 * top);
+    let solved = if near_cut {
+        None
+    } else {
+        match kept {
+            3 => Some(m.inverse() * rhs),
+            2 => null_vector(m, low, mid - low, top).map(|w| {
+                let shifted = m + DMat3::from_cols(w * w.x, w * w.y, w * w.z) * top;
+                shifted.inverse() * (rhs - w * w.dot(rhs))
+            }),
+            _ => null_vector(m, top, top - mid, top).map(|v| v * (v.dot(rhs) / top)),
+        }
+    };
+    match solved {
+        Some(x) if x.is_finite() => x,
+        _ => pseudo_inverse_jacobi(m, rhs),
+    }
+}
+
+/// The unit null vector of `m − λI` (an eigenvector of `m` for `λ`), when the nearest other
+/// eigenvalue is at least `gap` away (relative to the scale `top`) so that it is well defined:
+/// the longest cross product of two rows. `None` when the gap is too small to trust it.
+fn null_vector(m: DMat3, lambda: f64, gap: f64, top: f64) -> Option<DVec3> {
+    if gap <= 1e-6 * top {
+        return None;
+    }
+    let b = m - DMat3::from_diagonal(DVec3::splat(lambda));
+    let (r0, r1, r2) = (b.row(0), b.row(1), b.row(2));
+    let candidates = [r0.cross(r1), r0.cross(r2), r1.cross(r2)];
+    let best = candidates
+        .into_iter()
+        .max_by(|a, b| a.length_squared().total_cmp(&b.length_squared()))
+        .expect("three candidates");
+    // The cross products of `m − λI` have length up to the product of the other two
+    // eigenvalues' distances from `λ`; far below that, rounding dominates.
+    let len = best.length();
+    (len > 1e-3 * gap * top).then(|| best / len)
+}
+
+/// Eigenvalues of a symmetric 3 × 3 matrix in ascending order (trigonometric closed form).
+fn symmetric_eigenvalues(m: DMat3) -> [f64; 3] {
+    let (a, b, c) = (m.x_axis.x, m.y_axis.y, m.z_axis.z);
+    let (d, e, f) = (m.y_axis.x, m.z_axis.y, m.z_axis.x);
+    let p1 = d * d + e * e + f * f;
+    let q = (a + b + c) / 3.0;
+    let p2 = (a - q).powi(2) + (b - q).powi(2) + (c - q).powi(2) + 2.0 * p1;
+    if p2.is_nan() || p2 <= f64::EPSILON * f64::EPSILON * q * q {
+        return [q; 3];
+    }
+    let p = (p2 / 6.0).sqrt();
+    let bm = (m - DMat3::from_diagonal(DVec3::splat(q))) * (1.0 / p);
+    let r = (bm.determinant() / 2.0).clamp(-1.0, 1.0);
+    let phi = r.acos() / 3.0;
+    let hi = q + 2.0 * p * phi.cos();
+    let lo = q + 2.0 * p * (phi + 2.0 * std::f64::consts::PI / 3.0).cos();
+    [lo, 3.0 * q - hi - lo, hi]
+}
+
+/// [`pseudo_inverse_times`] from the Jacobi eigen-decomposition (slower; every case).
+fn pseudo_inverse_jacobi(m: DMat3, rhs: DVec3) -> DVec3 {
     let (values, vectors) = symmetric_eigen(m);
     let top = values.abs().max_element();
     let mut x = DVec3::ZERO;
@@ -280,6 +355,49 @@ mod tests {
             }
         }
         assert!(taken > 5_000 && declined > 5_000, "{taken} {declined}");
+    }
+
+    /// The closed-form pseudo-inverse gives the Jacobi decomposition's answer for matrices of
+    /// every rank: eigenvalues far apart, equal pairs, triples, zeros, just above and below the
+    /// cutoff (not within 10⁻⁶ of it, where the two may keep different directions).
+    #[test]
+    fn closed_form_pseudo_inverse_agrees_with_jacobi() {
+        let mut state = 0x2545_f491_4f6c_dd1du64;
+        let mut next = move || {
+            state ^= state << 13;
+            state ^= state >> 7;
+            state ^= state << 17;
+            (state >> 11) as f64 / (1u64 << 53) as f64
+        };
+        let levels = [
+            0.0, 1e-12, 1e-4, 0.01, 0.019, 0.021, 0.05, 0.3, 0.5, 0.5, 0.9, 1.0, 1.0,
+        ];
+        let mut ranks = [0usize; 4];
+        for case in 0..30_000 {
+            let axis = DVec3::new(next() - 0.5, next() - 0.5, next() - 0.5).normalize_or(DVec3::Z);
+            let turn = glam::DQuat::from_axis_angle(axis, 7.0 * next());
+            let pick = |r: f64| levels[(r * levels.len() as f64) as usize % levels.len()];
+            let scale = [1e-3, 1.0, 12.0, 400.0][case % 4];
+            let l = DVec3::new(1.0, pick(next()), pick(next())) * scale;
+            let r = DMat3::from_quat(turn);
+            let m = r * DMat3::from_diagonal(l) * r.transpose();
+            let rhs = DVec3::new(next() - 0.5, next() - 0.5, next() - 0.5) * scale;
+            let want = pseudo_inverse_jacobi(m, rhs);
+            let got = pseudo_inverse_times(m, rhs);
+            let rank = 1 + [l.y, l.z]
+                .iter()
+                .filter(|&&x| x > EIGEN_CUTOFF * scale)
+                .count();
+            ranks[rank] += 1;
+            assert!(
+                (got - want).length() <= 1e-7 * (1.0 + want.length()),
+                "{l} {rhs}: {got} against {want}"
+            );
+        }
+        assert!(
+            ranks[1] > 3_000 && ranks[2] > 3_000 && ranks[3] > 3_000,
+            "{ranks:?}"
+        );
     }
 
     /// Three planes through a corner give the corner exactly; two give a point on their line
