@@ -56,6 +56,7 @@ pub mod render;
 pub mod repair;
 pub mod simplify;
 pub mod sink;
+mod stars;
 pub mod subdivision;
 #[cfg(feature = "suites")]
 pub mod suites;

@@ -11,7 +11,9 @@
 //! overlap); see `triangles.rs`.
 //! Plain floating-point separation tests with a safe margin (`filter.rs`) settle most pairs
 //! before any exact predicate: in flat regions neighbours are exactly coplanar, and an exact
-//! zero is the slowest case of adaptive predicates.
+//! zero is the slowest case of adaptive predicates. Pairs sharing a vertex whose star is
+//! certified embedded (`fans.rs`, exact) are passed without a test: they meet only in what they
+//! share.
 //! Touching counts as meeting. Sharing means sharing a vertex index: two distinct vertices at
 //! the same position (an unwelded seam) touch, so their triangles count. Exactly collinear
 //! triangles are skipped (they are degenerate faces); triangles with unusable indices are left
@@ -28,6 +30,7 @@
 
 mod copies;
 mod corners;
+mod fans;
 mod filter;
 mod morton;
 mod predicates;
@@ -45,8 +48,10 @@ use rayon::prelude::*;
 
 use crate::IndexedMesh;
 use crate::measure::MeasureError;
+use crate::stars::{Stars, usable_triangles};
 use copies::Copies;
 use corners::{Corners, Item};
+use fans::Embedded;
 use morton::{Box32, GROUP, LEAF, LeafBoxes, LeafTree, curve_order};
 use predicates::Projection;
 use triangles::{Tri, meet_beyond_shared};
@@ -127,6 +132,17 @@ pub fn self_intersections(
     mesh: &IndexedMesh,
     limit: usize,
 ) -> Result<SelfIntersections, MeasureError> {
+    let stars = Stars::build(&usable_triangles(mesh), mesh.positions.len());
+    self_intersections_among(mesh, &stars, limit)
+}
+
+/// [`self_intersections`] given the `stars` of the mesh's usable triangles (the topology report
+/// builds them once for both).
+pub(crate) fn self_intersections_among(
+    mesh: &IndexedMesh,
+    stars: &Stars,
+    limit: usize,
+) -> Result<SelfIntersections, MeasureError> {
     let n = mesh.positions.len();
     if mesh.triangles.len() > u32::MAX as usize {
         return Err(MeasureError::TooLarge {
@@ -179,6 +195,7 @@ pub fn self_intersections(
         .collect();
     let order = curve_order(&boxes);
     let boxes: Vec<Box32> = order.par_iter().map(|&o| boxes[o as usize]).collect();
+    let embedded = Embedded::of(stars, &mesh.positions);
     let sorted = Sorted {
         ids: &ids,
         projections: &projections,
@@ -187,9 +204,9 @@ pub fn self_intersections(
         boxes,
     };
     let total = if <[[f32; 3]; 3]>::holds(&mesh.positions) {
-        search::<[[f32; 3]; 3]>(mesh, sorted, &copies, limit)
+        search::<[[f32; 3]; 3]>(mesh, sorted, &copies, &embedded, limit)
     } else {
-        search::<[DVec3; 3]>(mesh, sorted, &copies, limit)
+        search::<[DVec3; 3]>(mesh, sorted, &copies, &embedded, limit)
     };
     Ok(copies.among_themselves(limit).absorb(total, limit))
 }
@@ -213,6 +230,7 @@ fn search<C: Corners>(
     mesh: &IndexedMesh,
     sorted: Sorted<'_>,
     copies: &Copies,
+    embedded: &Embedded,
     limit: usize,
 ) -> SelfIntersections {
     let items: Vec<Item<C>> = sorted
@@ -244,6 +262,7 @@ fn search<C: Corners>(
                     items: &items,
                     boxes: &boxes,
                     copies,
+                    embedded,
                     limit,
                 };
                 search.group_pairs(level, group, &mut scratch, &mut found);
@@ -271,6 +290,7 @@ struct Search<'a, C> {
     items: &'a [Item<C>],
     boxes: &'a [LeafBoxes],
     copies: &'a Copies,
+    embedded: &'a Embedded,
     limit: usize,
 }
 
@@ -332,6 +352,9 @@ impl<C: Corners> Search<'_, C> {
                     let b = other * LEAF + mask.trailing_zeros() as usize;
                     mask &= mask - 1;
                     let ib = &items[b];
+                    if self.embedded.share_one(ia.vertices, ib.vertices) {
+                        continue;
+                    }
                     let tb = ib.tri();
                     // Lower index first, as the pairwise definition reads.
                     let ((x, tx), (y, ty)) = if ia.id < ib.id {

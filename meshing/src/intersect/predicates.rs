@@ -36,14 +36,18 @@ impl Projection {
         let mut axes = [0, 1, 2];
         axes.sort_by(|&i, &j| n[j].total_cmp(&n[i]));
         axes.into_iter()
-            .map(|drop| {
-                Self(match drop {
-                    0 => [1, 2],
-                    1 => [2, 0],
-                    _ => [0, 1],
-                })
-            })
+            .map(Self::dropping)
             .find(|p| p.orient(a, b, c) != 0)
+    }
+
+    /// The projection dropping `axis` (0, 1 or 2; larger reads as 2), its kept axes in cyclic
+    /// order, so a triangle whose normal points along `+axis` turns counter-clockwise.
+    pub(crate) fn dropping(axis: usize) -> Self {
+        Self(match axis {
+            0 => [1, 2],
+            1 => [2, 0],
+            _ => [0, 1],
+        })
     }
 
     /// The sign of the projected triangle `abc` (1: counter-clockwise). Three points with one
@@ -58,6 +62,11 @@ impl Projection {
             return 0;
         }
         sign(orient2d(self.coord(a), self.coord(b), self.coord(c)))
+    }
+
+    /// The two kept axes, in order.
+    pub(crate) fn axes(self) -> [usize; 2] {
+        self.0.map(usize::from)
     }
 
     /// The projected coordinates of `p`.

@@ -8,7 +8,7 @@
 //! corner; deterministic; supports up to 2³² corners.
 //!
 //! The half-edge builder (polygons) and the repair use this table; the report uses vertex stars
-//! (`stars.rs`).
+//! (`crate::stars`).
 
 use rayon::prelude::*;
 

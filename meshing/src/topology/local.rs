@@ -1,7 +1,7 @@
 //! What one vertex's star says: the kind of every edge from the vertex to a larger one, the
 //! number of fans around it, and its share of the Euler characteristic.
 //!
-//! In the star of `v` (`stars.rs`) the triangle `[v, b, a]` is `[b, a]`: it uses the edge
+//! In the star of `v` (`crate::stars`) the triangle `[v, b, a]` is `[b, a]`: it uses the edge
 //! `{v, b}` leaving `v` and the edge `{v, a}` entering it. So an edge `{v, x}` is used
 //! `out = #{b = x}` times in one direction and `in = #{a = x}` times in the other: once in all, a
 //! boundary edge; once each way, a manifold edge; twice the same way, an inconsistent edge; more,

@@ -4,7 +4,7 @@
 //!
 //! The report is computed directly from an [`IndexedMesh`], not through the half-edge mesh, so it
 //! works on any input, however broken. Every step is iterative and at worst O(n log n): the
-//! triangles are filed under their vertices (`stars.rs`, a counting sort); each vertex's star
+//! triangles are filed under their vertices (`crate::stars`, a counting sort); each vertex's star
 //! gives the kinds of its edges to larger vertices, its fans and its share of the Euler
 //! characteristic (`local.rs`), in parallel over vertices (`survey.rs`); shells join the ends of
 //! every edge in a concurrent union-find whose roots are each set's smallest element
@@ -36,7 +36,6 @@ mod local;
 mod measures;
 mod polygons;
 mod shells;
-mod stars;
 mod survey;
 mod text;
 mod verdict;
@@ -49,10 +48,6 @@ mod tests;
 #[cfg(test)]
 mod tests_reference;
 
-use std::borrow::Cow;
-
-use rayon::prelude::*;
-
 pub use defects::{DefectItems, MAX_DEFECT_PAIRS};
 pub(crate) use edges::{CornerLoops, EdgeKind, EdgeTable};
 pub use polygons::PolygonCounts;
@@ -60,7 +55,8 @@ pub use verdict::{MAX_LOCATED, OffenderPositions};
 pub(crate) use vertices::fan_counts;
 
 use crate::IndexedMesh;
-use crate::intersect::{is_usable, self_intersections};
+use crate::intersect::self_intersections_among;
+use crate::stars::{Stars, usable_triangles};
 use measures::Measures;
 use shells::ShellTally;
 use survey::Survey;
@@ -208,12 +204,17 @@ impl TopologyReport {
         intersection_free: bool,
     ) -> Self {
         let test = options.self_intersections && !intersection_free;
+        // The stars serve both the vertex pass and the self-intersection test.
+        let triangles = usable_triangles(mesh);
+        let stars = Stars::build(&triangles, mesh.positions.len());
         let intersections = || {
-            test.then(|| self_intersections(mesh, MAX_EXAMPLES).ok())
+            test.then(|| self_intersections_among(mesh, &stars, MAX_EXAMPLES).ok())
                 .flatten()
         };
-        let (mut report, intersections) =
-            rayon::join(|| Self::without_options(mesh), intersections);
+        let (mut report, intersections) = rayon::join(
+            || Self::without_options(mesh, &triangles, &stars),
+            intersections,
+        );
         if let Some(found) = intersections {
             report.self_intersections = Some(found.count);
             report.self_intersections_method = Some(SelfIntersectionsMethod::Tested);
@@ -225,13 +226,10 @@ impl TopologyReport {
         report
     }
 
-    /// The report without self-intersections.
-    fn without_options(mesh: &IndexedMesh) -> Self {
+    /// The report without self-intersections, from the usable `tris` and their `stars`.
+    fn without_options(mesh: &IndexedMesh, tris: &[[u32; 3]], stars: &Stars) -> Self {
         let vertex_count = mesh.positions.len();
-        let triangles = usable_triangles(mesh);
-        let tris: &[[u32; 3]] = &triangles;
-        let survey = Survey::of(tris, vertex_count);
-        let stars = &survey.stars;
+        let survey = Survey::of(tris, stars);
         let shells = &survey.shells;
         let (measures, tally) = rayon::join(
             || Measures::of(mesh, |v| stars.is_referenced(v)),
@@ -285,22 +283,6 @@ impl TopologyReport {
     /// none found): what `solidkit check` accepts.
     pub fn is_valid_solid(&self) -> bool {
         self.is_closed_manifold() && self.self_intersections.unwrap_or(0) == 0
-    }
-}
-
-/// The usable triangles (see [`is_usable`]), borrowed when all are.
-fn usable_triangles(mesh: &IndexedMesh) -> Cow<'_, [[u32; 3]]> {
-    let n = mesh.positions.len();
-    if mesh.triangles.par_iter().all(|t| is_usable(t, n)) {
-        Cow::Borrowed(&mesh.triangles)
-    } else {
-        Cow::Owned(
-            mesh.triangles
-                .iter()
-                .filter(|t| is_usable(t, n))
-                .copied()
-                .collect(),
-        )
     }
 }
 

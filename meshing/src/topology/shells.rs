@@ -7,7 +7,7 @@
 //! closed, oriented manifold (χ = 2 − 2g).
 
 use super::atomic_union_find::AtomicUnionFind;
-use super::stars::Stars;
+use crate::stars::Stars;
 use std::collections::HashSet;
 
 use glam::DVec3;
@@ -195,7 +195,8 @@ impl ShellTally {
 
 #[cfg(test)]
 mod tests {
-    use super::{AtomicUnionFind, ShellTally, Shells, Stars};
+    use super::{AtomicUnionFind, ShellTally, Shells};
+    use crate::stars::Stars;
     use glam::DVec3;
 
     /// The shells of `tris` with every triangle's vertices joined.

@@ -12,8 +12,8 @@ use super::atomic_union_find::AtomicUnionFind;
 use super::edges::EdgeKind;
 use super::local::{EdgeCounts, Local, Scratch, analyse};
 use super::shells::Shells;
-use super::stars::Stars;
 use super::{MAX_EXAMPLES, Offenders, push_example};
+use crate::stars::Stars;
 
 /// Vertices per parallel work item.
 const CHUNK: usize = 1 << 12;
@@ -21,8 +21,6 @@ const CHUNK: usize = 1 << 12;
 /// What the vertex pass found.
 #[derive(Debug)]
 pub(crate) struct Survey {
-    /// The vertex stars.
-    pub(crate) stars: Stars,
     /// The shell of every vertex.
     pub(crate) shells: Shells,
     /// Each vertex's share of `V − E + F` and whether it or an edge to a larger vertex is a
@@ -76,9 +74,9 @@ impl Partial {
 }
 
 impl Survey {
-    /// The vertex pass over the usable `triangles` (indices below `vertex_count`).
-    pub(crate) fn of(triangles: &[[u32; 3]], vertex_count: usize) -> Self {
-        let stars = Stars::build(triangles, vertex_count);
+    /// The vertex pass over the usable `triangles` and their `stars`.
+    pub(crate) fn of(triangles: &[[u32; 3]], stars: &Stars) -> Self {
+        let vertex_count = stars.vertex_count();
         let sets = AtomicUnionFind::new(vertex_count);
         let mut shares = vec![(0i32, false); vertex_count];
         let total = shares
@@ -113,9 +111,8 @@ impl Survey {
             .collect::<Vec<_>>()
             .into_iter()
             .fold(Partial::default(), Partial::absorb);
-        let shells = Shells::number(&sets, &stars, triangles);
+        let shells = Shells::number(&sets, stars, triangles);
         Self {
-            stars,
             shells,
             shares,
             counts: total.counts,

@@ -3,14 +3,37 @@
 //! Triangle `[v, b, a]` (in its winding order) is filed under each of its three vertices; under
 //! `v` it is stored as `[b, a]`: `v → b` is the triangle's edge leaving `v` and `a → v` the edge
 //! entering it. Everything the report asks of an edge `{v, x}` or of the fan around `v` can then be
-//! answered from `v`'s star alone (`local.rs`), in parallel over vertices.
+//! answered from `v`'s star alone (`topology/local.rs`), in parallel over vertices, and the
+//! self-intersection test certifies embedded fans from it (`intersect/fans.rs`); the report
+//! builds the stars once for both.
 //!
 //! Built by a counting sort into one array (eight bytes per corner, no hashing). The work is
 //! split into vertex ranges; each range scans every triangle and fills only its own stars, so no
 //! two threads write one place and each star lists its triangles in ascending triangle order
 //! whatever the thread count (the result is deterministic).
 
+use std::borrow::Cow;
+
 use rayon::prelude::*;
+
+use crate::IndexedMesh;
+use crate::intersect::is_usable;
+
+/// The usable triangles (see [`is_usable`]), borrowed when all are.
+pub(crate) fn usable_triangles(mesh: &IndexedMesh) -> Cow<'_, [[u32; 3]]> {
+    let n = mesh.positions.len();
+    if mesh.triangles.par_iter().all(|t| is_usable(t, n)) {
+        Cow::Borrowed(&mesh.triangles)
+    } else {
+        Cow::Owned(
+            mesh.triangles
+                .iter()
+                .filter(|t| is_usable(t, n))
+                .copied()
+                .collect(),
+        )
+    }
+}
 
 /// The star of every vertex `0..vertex_count`.
 #[derive(Debug, Clone)]
