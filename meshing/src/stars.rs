@@ -46,48 +46,65 @@ pub(crate) struct Stars {
 
 impl Stars {
     /// The stars of `triangles` (usable: indices below `vertex_count` and distinct).
+    ///
+    /// `starts` first holds each vertex's count, then (per range, in parallel, then shifted by the
+    /// ranges before) where its star ends; the fill walks the triangles backwards and moves each
+    /// end down by one per triangle, so every end becomes its star's start, each star ascending in
+    /// triangle order. No other array of vertex size.
     pub(crate) fn build(triangles: &[[u32; 3]], vertex_count: usize) -> Self {
         let ranges = vertex_ranges(vertex_count);
-        let mut counts = vec![0usize; vertex_count];
-        let mut count_pieces = split_by(&mut counts, &ranges, |r| r.start);
-        count_pieces
+        let mut starts = vec![0usize; vertex_count + 1];
+        let firsts: Vec<usize> = ranges.iter().map(|r| r.start).collect();
+        let mut pieces = split_at(&mut starts[..vertex_count], &firsts);
+        let totals: Vec<usize> = pieces
             .par_iter_mut()
             .zip(&ranges)
-            .for_each(|(piece, range)| {
+            .map(|(piece, range)| {
                 for &v in triangles.as_flattened() {
                     if range.contains(&(v as usize)) {
                         piece[v as usize - range.start] += 1;
                     }
                 }
-            });
-        let mut starts = Vec::with_capacity(vertex_count + 1);
-        let mut total = 0;
-        starts.push(0);
-        for c in counts {
-            total += c;
-            starts.push(total);
-        }
+                let mut end = 0;
+                for count in piece.iter_mut() {
+                    end += *count;
+                    *count = end;
+                }
+                end
+            })
+            .collect();
+        let bases: Vec<usize> = totals
+            .iter()
+            .scan(0, |sum, &t| {
+                let base = *sum;
+                *sum += t;
+                Some(base)
+            })
+            .collect();
+        let total: usize = totals.iter().sum();
+        pieces
+            .par_iter_mut()
+            .zip(&bases)
+            .for_each(|(piece, &base)| piece.iter_mut().for_each(|end| *end += base));
         let mut links = vec![[0u32; 2]; total];
-        let mut cursors = starts[..vertex_count].to_vec();
-        let link_pieces = split_by(&mut links, &ranges, |r| starts[r.start]);
-        let cursor_pieces = split_by(&mut cursors, &ranges, |r| r.start);
+        let link_pieces = split_at(&mut links, &bases);
         link_pieces
             .into_par_iter()
-            .zip(cursor_pieces)
-            .zip(&ranges)
-            .for_each(|((links, cursors), range)| {
-                let base = starts[range.start];
-                for tri in triangles {
+            .zip(pieces)
+            .zip(ranges.par_iter().zip(&bases))
+            .for_each(|((links, ends), (range, &base))| {
+                for tri in triangles.iter().rev() {
                     for k in 0..3 {
                         let v = tri[k] as usize;
                         if range.contains(&v) {
-                            let slot = &mut cursors[v - range.start];
-                            links[*slot - base] = [tri[(k + 1) % 3], tri[(k + 2) % 3]];
-                            *slot += 1;
+                            let end = &mut ends[v - range.start];
+                            *end -= 1;
+                            links[*end - base] = [tri[(k + 1) % 3], tri[(k + 2) % 3]];
                         }
                     }
                 }
             });
+        starts[vertex_count] = total;
         Self { starts, links }
     }
 
@@ -116,17 +133,13 @@ fn vertex_ranges(vertex_count: usize) -> Vec<std::ops::Range<usize>> {
         .collect()
 }
 
-/// `items` cut into consecutive mutable pieces, piece `i` starting at `start(&ranges[i])`
-/// (ascending) and ending where the next starts.
-fn split_by<'a, T>(
-    items: &'a mut [T],
-    ranges: &[std::ops::Range<usize>],
-    start: impl Fn(&std::ops::Range<usize>) -> usize,
-) -> Vec<&'a mut [T]> {
-    let mut pieces = Vec::with_capacity(ranges.len());
+/// `items` cut into consecutive mutable pieces, piece `i` from `firsts[i] - firsts[0]` to where
+/// the next starts (`firsts` ascending, every difference within `items`).
+fn split_at<'a, T>(items: &'a mut [T], firsts: &[usize]) -> Vec<&'a mut [T]> {
+    let mut pieces = Vec::with_capacity(firsts.len());
     let mut rest = items;
-    let mut at = ranges.first().map_or(0, &start);
-    for next in ranges.iter().skip(1).map(&start).chain([at + rest.len()]) {
+    let mut at = firsts.first().copied().unwrap_or(0);
+    for next in firsts.iter().skip(1).copied().chain([at + rest.len()]) {
         let (piece, tail) = rest.split_at_mut(next - at);
         pieces.push(piece);
         rest = tail;
