@@ -130,6 +130,7 @@ fn pseudo_angle(sign: i8, x: f64, y: f64) -> f64 {
 mod tests {
     use super::*;
     use crate::intersect::pair_meets;
+    use crate::intersect::tests_reference::Lcg;
 
     /// A fan of `k` triangles around the origin: neighbours at the given angles and heights.
     fn fan(angles: &[f64], heights: &[f64]) -> (Vec<DVec3>, Vec<[u32; 3]>) {
@@ -218,19 +219,6 @@ mod tests {
             "{given} of {}",
             t.positions.len()
         );
-    }
-
-    /// A small deterministic generator.
-    struct Lcg(u64);
-
-    impl Lcg {
-        fn unit(&mut self) -> f64 {
-            self.0 = self
-                .0
-                .wrapping_mul(6_364_136_223_846_793_005)
-                .wrapping_add(1_442_695_040_888_963_407);
-            (self.0 >> 11) as f64 / (1u64 << 53) as f64
-        }
     }
 
     /// Random fans, some folded, some winding twice, some steep, some on an `f32` lattice with coplanar triangles:

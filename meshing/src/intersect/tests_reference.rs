@@ -43,11 +43,12 @@ fn broken_suite_agrees() {
     );
 }
 
-/// A small deterministic generator.
-struct Lcg(u64);
+/// A small deterministic generator (also for `fans.rs`).
+pub(super) struct Lcg(pub(super) u64);
 
 impl Lcg {
-    fn unit(&mut self) -> f64 {
+    /// The next number in `[0, 1)`.
+    pub(super) fn unit(&mut self) -> f64 {
         self.0 = self
             .0
             .wrapping_mul(6_364_136_223_846_793_005)
