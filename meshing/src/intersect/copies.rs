@@ -1,15 +1,16 @@
 //! Repeated triangles: the groups of usable triangles with the same three vertex indices (in any
-//! order), found by filing every triangle under its smallest vertex (a counting sort, linear
-//! time) and comparing the other two within each small bucket. Only the lowest-index copy of a
-//! group (its representative) takes part in the search; see the [parent module](super).
+//! order), found by sorting the candidates' vertex sets. Only the lowest-index copy of a group (its
+//! representative) takes part in the search; see the [parent module](super).
+//!
+//! The candidates are the triangles without a certified vertex (`fans.rs`): a certified star is
+//! one closed fan of triangles keeping one orientation, which holds no two triangles on the same
+//! vertices, so a triangle with a certified vertex has no copy. On a clean mesh few triangles
+//! are left to sort.
 
 use rayon::prelude::*;
 use std::collections::HashMap;
 
 use super::SelfIntersections;
-
-/// Vertices per parallel work item when scanning buckets.
-const GROUP: usize = 1 << 14;
 
 /// The groups of repeated triangles, by their representative (lowest index).
 #[derive(Debug, Default)]
@@ -19,70 +20,32 @@ pub(crate) struct Copies {
 }
 
 impl Copies {
-    /// Groups the triangles `ids` (ascending mesh indices, vertex indices `keys[k]` sorted
-    /// ascending, all below `vertex_count`) and clears `keep[k]` for every copy but the
+    /// Groups the `candidates` (each its vertex indices sorted ascending and its position `k` in
+    /// the ascending mesh indices `ids`) and clears `keep[k]` for every copy but the
     /// representative of its group.
     pub(crate) fn find(
         ids: &[u32],
-        keys: &[[u32; 3]],
+        mut candidates: Vec<([u32; 3], u32)>,
         keep: &mut [bool],
-        vertex_count: usize,
         limit: usize,
     ) -> Self {
-        // Counting sort of the positions `k` by smallest vertex; each bucket stays ascending.
-        let mut starts = vec![0u32; vertex_count + 1];
-        for key in keys {
-            starts[key[0] as usize + 1] += 1;
-        }
-        for v in 0..vertex_count {
-            starts[v + 1] += starts[v];
-        }
-        let mut fill = starts.clone();
-        let mut order = vec![0u32; keys.len()];
-        for (k, key) in keys.iter().enumerate() {
-            let at = &mut fill[key[0] as usize];
-            order[*at as usize] = k as u32;
-            *at += 1;
-        }
-        let members: Vec<Vec<u32>> = (0..vertex_count)
-            .into_par_iter()
-            .step_by(GROUP)
-            .flat_map_iter(|first| {
-                let mut found = Vec::new();
-                let mut bucket: Vec<([u32; 2], u32)> = Vec::new();
-                for v in first..(first + GROUP).min(vertex_count) {
-                    let run = &order[starts[v] as usize..starts[v + 1] as usize];
-                    if run.len() < 2 {
-                        continue;
-                    }
-                    bucket.clear();
-                    bucket.extend(run.iter().map(|&k| {
-                        let key = keys[k as usize];
-                        ([key[1], key[2]], k)
-                    }));
-                    bucket.sort_unstable();
-                    for same in bucket.chunk_by(|a, b| a.0 == b.0) {
-                        if same.len() > 1 {
-                            found.push(same.iter().map(|&(_, k)| k).collect());
-                        }
-                    }
-                }
-                found
-            })
-            .collect();
+        candidates.par_sort_unstable();
         let mut groups = HashMap::new();
-        for positions in members {
+        for same in candidates.chunk_by(|a, b| a.0 == b.0) {
+            if same.len() < 2 {
+                continue;
+            }
             // Positions ascend with mesh index, so the first is the representative.
-            for &k in &positions[1..] {
+            for &(_, k) in &same[1..] {
                 keep[k as usize] = false;
             }
             // `limit + 1`: the smallest pairs among copies are the first with the next `limit`.
-            let first = positions
+            let first = same
                 .iter()
                 .take(limit.saturating_add(1))
-                .map(|&k| ids[k as usize])
+                .map(|&(_, k)| ids[k as usize])
                 .collect();
-            groups.insert(ids[positions[0] as usize], (positions.len(), first));
+            groups.insert(ids[same[0].1 as usize], (same.len(), first));
         }
         Self { groups }
     }

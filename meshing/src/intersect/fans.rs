@@ -60,6 +60,12 @@ impl Embedded {
         self.0.get(v / 64).is_some_and(|w| w >> (v % 64) & 1 == 1)
     }
 
+    /// True when some vertex of the triangle `t` (vertex indices) is certified.
+    #[inline]
+    pub(crate) fn touches(&self, t: [u32; 3]) -> bool {
+        t.iter().any(|&v| self.contains(v))
+    }
+
     /// True when the triangles `a` and `b` (vertex indices) share a certified vertex.
     #[inline]
     pub(crate) fn share_one(&self, a: [u32; 3], b: [u32; 3]) -> bool {

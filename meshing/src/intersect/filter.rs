@@ -90,14 +90,18 @@ pub(crate) fn separated(s: [DVec3; 3], t: [DVec3; 3]) -> bool {
 /// [`separated`] with the candidate planes of `s` only.
 fn separated_by_one(s: [DVec3; 3], t: [DVec3; 3]) -> bool {
     let o = s[0];
-    let extent = s
+    let (e1, e2) = (s[1] - o, s[2] - o);
+    // Squared lengths, and two square roots rather than one per length: the bounds only need to
+    // be far above the rounding errors, which the margin `TOL` is.
+    let (l1, l2) = (e1.length_squared(), e2.length_squared());
+    let far = t
         .iter()
-        .chain(&t)
-        .map(|p| (*p - o).length())
-        .fold(0.0, f64::max);
-    let n = (s[1] - o).cross(s[2] - o);
+        .map(|p| (*p - o).length_squared())
+        .fold(l1.max(l2), f64::max);
+    let extent = far.sqrt();
+    let n = e1.cross(e2);
     // Rounding errors scale with the edge lengths, not with |n| (small for a sliver).
-    let scale = (s[1] - o).length() * (s[2] - o).length() * extent;
+    let scale = (l1 * l2).sqrt() * extent;
     // The plane of `s`.
     let d = t.map(|p| n.dot(p - o));
     if all_strictly(&d, 1.0, scale) || all_strictly(&d, -1.0, scale) {

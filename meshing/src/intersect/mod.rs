@@ -163,42 +163,45 @@ pub(crate) fn self_intersections_among(
     if let Some(vertex) = bad {
         return Err(MeasureError::NonFiniteVertex { vertex });
     }
-    // Degenerate (exactly collinear) triangles take no part. Each triangle's projection is kept
-    // (two bytes) rather than its corners, which are read again below: a vector of every
-    // triangle's corners was the largest allocation.
-    let projections: Vec<Option<Projection>> = ids
-        .par_iter()
-        .map(|&t| Projection::of(mesh.triangle_positions(t as usize)))
-        .collect();
-    let mut keep: Vec<bool> = projections.par_iter().map(Option::is_some).collect();
-    let keys: Vec<[u32; 3]> = ids
+    let embedded = Embedded::of(stars, &mesh.positions);
+    // Each triangle's projection (`None`: exactly collinear, a degenerate face, which takes no
+    // part) and box, in one pass over the corners.
+    let prepared: Vec<(Option<Projection>, Box32)> = ids
         .par_iter()
         .map(|&t| {
-            let mut key = mesh.triangles[t as usize];
-            key.sort_unstable();
-            key
+            let p @ [a, b, c] = mesh.triangle_positions(t as usize);
+            let lo = a.min(b).min(c).to_array();
+            (
+                Projection::of(p),
+                Box32::outward(lo, a.max(b).max(c).to_array()),
+            )
         })
         .collect();
-    let copies = Copies::find(&ids, &keys, &mut keep, n, limit);
-    drop(keys);
+    let mut keep: Vec<bool> = prepared.par_iter().map(|(p, _)| p.is_some()).collect();
+    // Only triangles without a certified vertex can have copies (see `copies.rs`).
+    let candidates: Vec<([u32; 3], u32)> = (0..ids.len() as u32)
+        .into_par_iter()
+        .filter_map(|k| {
+            let mut key = mesh.triangles[ids[k as usize] as usize];
+            (keep[k as usize] && !embedded.touches(key)).then(|| {
+                key.sort_unstable();
+                (key, k)
+            })
+        })
+        .collect();
+    let copies = Copies::find(&ids, candidates, &mut keep, limit);
     // The representatives, in curve order.
     let active: Vec<u32> = (0..ids.len() as u32)
+        .into_par_iter()
         .filter(|&k| keep[k as usize])
         .collect();
     drop(keep);
-    let boxes: Vec<Box32> = active
-        .par_iter()
-        .map(|&k| {
-            let [a, b, c] = mesh.triangle_positions(ids[k as usize] as usize);
-            Box32::outward(a.min(b).min(c).to_array(), a.max(b).max(c).to_array())
-        })
-        .collect();
-    let order = curve_order(&boxes);
-    let boxes: Vec<Box32> = order.par_iter().map(|&o| boxes[o as usize]).collect();
-    let embedded = Embedded::of(stars, &mesh.positions);
+    let box_of = |o: usize| prepared[active[o] as usize].1;
+    let order = curve_order(active.len(), box_of);
+    let boxes: Vec<Box32> = order.par_iter().map(|&o| box_of(o as usize)).collect();
     let sorted = Sorted {
         ids: &ids,
-        projections: &projections,
+        prepared: &prepared,
         active: &active,
         order: &order,
         boxes,
@@ -215,8 +218,8 @@ pub(crate) fn self_intersections_among(
 struct Sorted<'a> {
     /// Usable triangles (mesh indices).
     ids: &'a [u32],
-    /// Their projections (`None`: degenerate).
-    projections: &'a [Option<Projection>],
+    /// Their projections (`None`: degenerate) and boxes.
+    prepared: &'a [(Option<Projection>, Box32)],
     /// The representatives (positions in `ids`).
     active: &'a [u32],
     /// The curve order of `active`.
@@ -239,7 +242,7 @@ fn search<C: Corners>(
         .filter_map(|&o| {
             let k = sorted.active[o as usize] as usize;
             let id = sorted.ids[k];
-            sorted.projections[k].map(|proj| Item {
+            sorted.prepared[k].0.map(|proj| Item {
                 id,
                 vertices: mesh.triangles[id as usize],
                 corners: C::store(mesh.triangle_positions(id as usize)),

@@ -127,12 +127,12 @@ fn up(x: f64) -> f32 {
     if f64::from(y) < x { y.next_up() } else { y }
 }
 
-/// The order of `boxes` along the Morton curve of their centres (ties by index, so the order is
-/// the same on every run).
-pub(crate) fn curve_order(boxes: &[Box32]) -> Vec<u32> {
-    let whole = boxes
-        .par_iter()
-        .copied()
+/// The order of the `count` boxes `box_of(i)` along the Morton curve of their centres (ties by
+/// index, so the order is the same on every run).
+pub(crate) fn curve_order(count: usize, box_of: impl Fn(usize) -> Box32 + Sync) -> Vec<u32> {
+    let whole = (0..count)
+        .into_par_iter()
+        .map(&box_of)
         .reduce_with(|a, b| a.union(&b))
         .unwrap_or(Box32 {
             lo: [0.0; 3],
@@ -147,10 +147,10 @@ pub(crate) fn curve_order(boxes: &[Box32]) -> Vec<u32> {
             0.0
         }
     });
-    let mut keyed: Vec<(u64, u32)> = boxes
-        .par_iter()
-        .enumerate()
-        .map(|(i, b)| {
+    let mut keyed: Vec<(u64, u32)> = (0..count)
+        .into_par_iter()
+        .map(|i| {
+            let b = box_of(i);
             let cell = [0, 1, 2].map(|k| {
                 let centre = (f64::from(b.lo[k]) + f64::from(b.hi[k])) * 0.5;
                 // Finite inputs give finite boxes; `as` saturates, so this never wraps.

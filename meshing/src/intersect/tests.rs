@@ -464,6 +464,26 @@ fn many_coincident_triangles_are_fast() {
     assert_eq!(got.examples, [[0, 1], [0, 2], [0, 3], [0, 4]]);
 }
 
+/// Copies of an exactly collinear triangle take no part, like any degenerate face (the pairwise
+/// definition skips them), while copies of a proper triangle still count every pair.
+#[test]
+fn repeated_collinear_triangles_take_no_part() {
+    let positions = vec![
+        v(0.0, 0.0, 0.0),
+        v(1.0, 0.0, 0.0),
+        v(2.0, 0.0, 0.0),
+        v(0.0, 1.0, 0.0),
+    ];
+    let mut triangles = vec![[0, 1, 2], [2, 1, 0], [1, 2, 0], [0, 1, 3], [3, 1, 0]];
+    triangles.extend([[0, 2, 1]; 3]);
+    let mesh = IndexedMesh::new(positions, triangles);
+    let want = all_pairs(&mesh);
+    assert_eq!(want, [[3, 4]]);
+    let got = self_intersections(&mesh, 8).unwrap();
+    assert_eq!(got.count, want.len());
+    assert_eq!(got.examples, want);
+}
+
 #[test]
 fn usable_requires_range_and_distinct_indices() {
     assert!(is_usable(&[0, 1, 2], 3));

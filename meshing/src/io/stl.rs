@@ -98,28 +98,14 @@ pub(super) fn read_binary(
     count: u32,
     name: &str,
 ) -> Result<IndexedMesh, MeshIoError> {
-    let records = bytes
-        .get(PREAMBLE_LEN as usize..)
-        .unwrap_or_default()
-        .par_chunks_exact(RECORD_LEN as usize);
-    let corners: Vec<[f32; 3]> = records
-        .map(|r| {
-            let f = |at: usize| f32::from_le_bytes([r[at], r[at + 1], r[at + 2], r[at + 3]]);
-            [0, 1, 2].map(|k| [0, 4, 8].map(|d| f(12 + 12 * k + d)))
-        })
-        .collect::<Vec<[[f32; 3]; 3]>>()
-        .into_flattened();
-    let finite = |c: &[f32; 3]| c.iter().all(|x| x.is_finite());
-    if corners.len() != 3 * count as usize || !corners.par_iter().all(finite) {
+    let body = bytes.get(PREAMBLE_LEN as usize..).unwrap_or_default();
+    if body.len() as u64 != RECORD_LEN * u64::from(count) {
         return read_binary_serial(bytes, count, name);
     }
-    let (positions, index) =
-        weld_parallel::weld(&corners).ok_or_else(|| too_many_vertices(name))?;
-    let triangles = index
-        .par_chunks_exact(3)
-        .map(|c| [c[0], c[1], c[2]])
-        .collect();
-    Ok(IndexedMesh::new(positions, triangles))
+    match weld_parallel::weld_records(body) {
+        Some((positions, triangles)) => Ok(IndexedMesh::new(positions, triangles)),
+        None => read_binary_serial(bytes, count, name),
+    }
 }
 
 /// Binary STL, one record after the other (the reference of [`read_binary`], and its error
