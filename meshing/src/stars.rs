@@ -135,7 +135,7 @@ fn vertex_ranges(vertex_count: usize) -> Vec<std::ops::Range<usize>> {
 
 /// `items` cut into consecutive mutable pieces, piece `i` from `firsts[i] - firsts[0]` to where
 /// the next starts (`firsts` ascending, every difference within `items`).
-fn split_at<'a, T>(items: &'a mut [T], firsts: &[usize]) -> Vec<&'a mut [T]> {
+pub(crate) fn split_at<'a, T>(items: &'a mut [T], firsts: &[usize]) -> Vec<&'a mut [T]> {
     let mut pieces = Vec::with_capacity(firsts.len());
     let mut rest = items;
     let mut at = firsts.first().copied().unwrap_or(0);

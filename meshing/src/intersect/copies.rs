@@ -17,37 +17,49 @@ use super::SelfIntersections;
 pub(crate) struct Copies {
     /// Representative → (number of copies, the `limit + 1` lowest indices, ascending).
     pub(crate) groups: HashMap<u32, (usize, Vec<u32>)>,
+    /// One bit per triangle, set for the copies that are not their group's representative
+    /// (empty when there are no copies).
+    pub(crate) others: Vec<u64>,
 }
 
 impl Copies {
-    /// Groups the `candidates` (each its vertex indices sorted ascending and its position `k` in
-    /// the ascending mesh indices `ids`) and clears `keep[k]` for every copy but the
-    /// representative of its group.
+    /// Groups the `candidates` (each its vertex indices sorted ascending and its triangle index,
+    /// all below `triangle_count`).
     pub(crate) fn find(
-        ids: &[u32],
         mut candidates: Vec<([u32; 3], u32)>,
-        keep: &mut [bool],
+        triangle_count: usize,
         limit: usize,
     ) -> Self {
         candidates.par_sort_unstable();
-        let mut groups = HashMap::new();
+        let mut copies = Self::default();
         for same in candidates.chunk_by(|a, b| a.0 == b.0) {
             if same.len() < 2 {
                 continue;
             }
-            // Positions ascend with mesh index, so the first is the representative.
-            for &(_, k) in &same[1..] {
-                keep[k as usize] = false;
+            if copies.others.is_empty() {
+                copies.others = vec![0; triangle_count.div_ceil(64)];
+            }
+            // Sorted by index within the group, so the first is the representative.
+            for &(_, t) in &same[1..] {
+                copies.others[t as usize / 64] |= 1 << (t % 64);
             }
             // `limit + 1`: the smallest pairs among copies are the first with the next `limit`.
             let first = same
                 .iter()
                 .take(limit.saturating_add(1))
-                .map(|&(_, k)| ids[k as usize])
+                .map(|&(_, t)| t)
                 .collect();
-            groups.insert(ids[same[0].1 as usize], (same.len(), first));
+            copies.groups.insert(same[0].1, (same.len(), first));
         }
-        Self { groups }
+        copies
+    }
+
+    /// True when triangle `t` is a copy other than its group's representative (it takes no part
+    /// in the search).
+    pub(crate) fn is_other(&self, t: u32) -> bool {
+        self.others
+            .get(t as usize / 64)
+            .is_some_and(|w| w >> (t % 64) & 1 == 1)
     }
 
     /// How many triangles `i` stands for, and the lowest of their indices (none listed for a

@@ -52,7 +52,7 @@ use crate::stars::{Stars, usable_triangles};
 use copies::Copies;
 use corners::{Corners, Item};
 use fans::Embedded;
-use morton::{Box32, GROUP, LEAF, LeafBoxes, LeafTree, curve_order};
+use morton::{Box32, Frame, GROUP, LEAF, LeafBoxes, LeafTree, curve_sort};
 use predicates::Projection;
 use triangles::{Tri, meet_beyond_shared};
 
@@ -149,110 +149,109 @@ pub(crate) fn self_intersections_among(
             count: mesh.triangles.len(),
         });
     }
-    let ids: Vec<u32> = (0..mesh.triangles.len() as u32)
-        .into_par_iter()
-        .filter(|&t| is_usable(&mesh.triangles[t as usize], n))
-        .collect();
-    // The first non-finite corner in triangle order, as the error.
-    let bad = ids.par_iter().find_map_first(|&t| {
-        let tri = mesh.triangles[t as usize];
-        (0..3)
-            .find(|&k| !mesh.positions[tri[k] as usize].is_finite())
-            .map(|k| tri[k] as usize)
-    });
-    if let Some(vertex) = bad {
-        return Err(MeasureError::NonFiniteVertex { vertex });
+    let usable = |t: usize| is_usable(&mesh.triangles[t], n);
+    // The first non-finite corner in triangle order, as the error (looked for when some
+    // position is not finite).
+    if !mesh.positions.par_iter().all(|p| p.is_finite()) {
+        let bad = (0..mesh.triangles.len())
+            .into_par_iter()
+            .filter(|&t| usable(t))
+            .find_map_first(|t| {
+                let tri = mesh.triangles[t];
+                (0..3)
+                    .find(|&k| !mesh.positions[tri[k] as usize].is_finite())
+                    .map(|k| tri[k] as usize)
+            });
+        if let Some(vertex) = bad {
+            return Err(MeasureError::NonFiniteVertex { vertex });
+        }
     }
     let embedded = Embedded::of(stars, &mesh.positions);
-    // Each triangle's projection (`None`: exactly collinear, a degenerate face, which takes no
-    // part) and box, in one pass over the corners.
-    let prepared: Vec<(Option<Projection>, Box32)> = ids
-        .par_iter()
-        .map(|&t| {
-            let p @ [a, b, c] = mesh.triangle_positions(t as usize);
-            let lo = a.min(b).min(c).to_array();
-            (
-                Projection::of(p),
-                Box32::outward(lo, a.max(b).max(c).to_array()),
-            )
-        })
-        .collect();
-    let mut keep: Vec<bool> = prepared.par_iter().map(|(p, _)| p.is_some()).collect();
-    // Only triangles without a certified vertex can have copies (see `copies.rs`).
-    let candidates: Vec<([u32; 3], u32)> = (0..ids.len() as u32)
+    let frame = used_frame(stars, &mesh.positions);
+    // In one pass over the corners: every usable triangle that is not exactly collinear (a
+    // degenerate face, which takes no part), its projection and the curve code of its box.
+    let coded: Vec<Coded> = (0..mesh.triangles.len())
         .into_par_iter()
-        .filter_map(|k| {
-            let mut key = mesh.triangles[ids[k as usize] as usize];
-            (keep[k as usize] && !embedded.touches(key)).then(|| {
-                key.sort_unstable();
-                (key, k)
+        .filter_map(|t| {
+            if !usable(t) {
+                return None;
+            }
+            let p @ [a, b, c] = mesh.triangle_positions(t);
+            let proj = Projection::of(p)?;
+            let centre = (a.min(b).min(c) + a.max(b).max(c)) * 0.5;
+            Some(Coded {
+                code: frame.code(centre.to_array()),
+                t: t as u32,
+                proj,
             })
         })
         .collect();
-    let copies = Copies::find(&ids, candidates, &mut keep, limit);
-    // The representatives, in curve order.
-    let active: Vec<u32> = (0..ids.len() as u32)
-        .into_par_iter()
-        .filter(|&k| keep[k as usize])
+    // Only triangles without a certified vertex can have copies (see `copies.rs`).
+    let candidates: Vec<([u32; 3], u32)> = coded
+        .par_iter()
+        .filter_map(|c| {
+            let mut key = mesh.triangles[c.t as usize];
+            (!embedded.touches(key)).then(|| {
+                key.sort_unstable();
+                (key, c.t)
+            })
+        })
         .collect();
-    drop(keep);
-    let box_of = |o: usize| prepared[active[o] as usize].1;
-    let order = curve_order(active.len(), box_of);
-    let boxes: Vec<Box32> = order.par_iter().map(|&o| box_of(o as usize)).collect();
-    let sorted = Sorted {
-        ids: &ids,
-        prepared: &prepared,
-        active: &active,
-        order: &order,
-        boxes,
-    };
+    let copies = Copies::find(candidates, mesh.triangles.len(), limit);
+    let sorted = curve_sort(coded, |c| (c.code, c.t));
     let total = if <[[f32; 3]; 3]>::holds(&mesh.positions) {
-        search::<[[f32; 3]; 3]>(mesh, sorted, &copies, &embedded, limit)
+        search::<[[f32; 3]; 3]>(mesh, &sorted, &copies, &embedded, limit)
     } else {
-        search::<[DVec3; 3]>(mesh, sorted, &copies, &embedded, limit)
+        search::<[DVec3; 3]>(mesh, &sorted, &copies, &embedded, limit)
     };
     Ok(copies.among_themselves(limit).absorb(total, limit))
 }
 
-/// The triangles taking part, in curve order.
-struct Sorted<'a> {
-    /// Usable triangles (mesh indices).
-    ids: &'a [u32],
-    /// Their projections (`None`: degenerate) and boxes.
-    prepared: &'a [(Option<Projection>, Box32)],
-    /// The representatives (positions in `ids`).
-    active: &'a [u32],
-    /// The curve order of `active`.
-    order: &'a [u32],
-    /// The boxes of `active` in curve order.
-    boxes: Vec<Box32>,
+/// A triangle taking part, before the curve order: the curve code of its box's centre, its mesh
+/// index and its projection.
+#[derive(Debug, Clone, Copy)]
+struct Coded {
+    code: u64,
+    t: u32,
+    proj: Projection,
 }
 
-/// The pair search over the triangles of `sorted`, their corners stored as `C`.
+/// The curve's frame: the box of the vertices that triangles use (any box gives a correct
+/// search; a tight one a good order).
+fn used_frame(stars: &Stars, positions: &[DVec3]) -> Frame {
+    let used = (0..positions.len())
+        .into_par_iter()
+        .filter(|&v| stars.is_referenced(v))
+        .map(|v| (positions[v], positions[v]))
+        .reduce_with(|a, b| (a.0.min(b.0), a.1.max(b.1)));
+    let (lo, hi) = used.unwrap_or((DVec3::ZERO, DVec3::ZERO));
+    Frame::new(lo.to_array(), hi.to_array())
+}
+
+/// The pair search over the triangles `sorted` (in curve order; copies other than their
+/// representative are left out here), their corners stored as `C`.
 fn search<C: Corners>(
     mesh: &IndexedMesh,
-    sorted: Sorted<'_>,
+    sorted: &[Coded],
     copies: &Copies,
     embedded: &Embedded,
     limit: usize,
 ) -> SelfIntersections {
     let items: Vec<Item<C>> = sorted
-        .order
         .par_iter()
-        .filter_map(|&o| {
-            let k = sorted.active[o as usize] as usize;
-            let id = sorted.ids[k];
-            sorted.prepared[k].0.map(|proj| Item {
-                id,
-                vertices: mesh.triangles[id as usize],
-                corners: C::store(mesh.triangle_positions(id as usize)),
-                proj,
-            })
+        .filter(|c| !copies.is_other(c.t))
+        .map(|c| Item {
+            id: c.t,
+            vertices: mesh.triangles[c.t as usize],
+            corners: C::store(mesh.triangle_positions(c.t as usize)),
+            proj: c.proj,
         })
         .collect();
-    let tree = LeafTree::new(&sorted.boxes);
-    let boxes = LeafBoxes::of(&sorted.boxes);
-    drop(sorted);
+    let boxes = LeafBoxes::of(items.len(), |i| {
+        let [a, b, c] = items[i].corners.load();
+        Box32::outward(a.min(b).min(c).to_array(), a.max(b).max(c).to_array())
+    });
+    let tree = LeafTree::new(&boxes);
     let level = tree.group_level();
     (0..tree.node_count(level))
         .into_par_iter()

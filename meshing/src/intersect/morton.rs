@@ -13,6 +13,8 @@
 
 use rayon::prelude::*;
 
+use crate::stars::split_at;
+
 /// Boxes per leaf.
 pub(crate) const LEAF: usize = 4;
 
@@ -20,6 +22,9 @@ pub(crate) const LEAF: usize = 4;
 /// node's box, then keep the leaves found that meet their own box, which gives each leaf the
 /// same leaves as a query of its own at a quarter of the traversals.
 pub(crate) const GROUP: usize = 4;
+
+/// Bits of the Morton code (of 63) that the curve order's counting sort buckets by.
+const TOP_BITS: u32 = 12;
 
 /// An axis-aligned box in single precision.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -67,16 +72,17 @@ pub(crate) struct LeafBoxes {
 }
 
 impl LeafBoxes {
-    /// The leaves of `boxes` (in curve order), [`LEAF`] boxes each.
-    pub(crate) fn of(boxes: &[Box32]) -> Vec<Self> {
-        boxes
-            .par_chunks(LEAF)
-            .map(|chunk| {
+    /// The leaves of the `count` boxes `box_of(i)` (in curve order), [`LEAF`] boxes each.
+    pub(crate) fn of(count: usize, box_of: impl Fn(usize) -> Box32 + Sync) -> Vec<Self> {
+        (0..count.div_ceil(LEAF))
+            .into_par_iter()
+            .map(|l| {
                 let mut leaf = Self {
                     lo: [[f32::INFINITY; LEAF]; 3],
                     hi: [[f32::NEG_INFINITY; LEAF]; 3],
                 };
-                for (lane, b) in chunk.iter().enumerate() {
+                for lane in 0..LEAF.min(count - l * LEAF) {
+                    let b = box_of(l * LEAF + lane);
                     for k in 0..3 {
                         leaf.lo[k][lane] = b.lo[k];
                         leaf.hi[k][lane] = b.hi[k];
@@ -85,6 +91,17 @@ impl LeafBoxes {
                 leaf
             })
             .collect()
+    }
+
+    /// The box of all its lanes (empty lanes add nothing).
+    fn bounds(&self) -> Box32 {
+        let fold = |lanes: &[f32; LEAF], f: fn(f32, f32) -> f32| {
+            lanes.iter().copied().reduce(f).unwrap_or(f32::NAN)
+        };
+        Box32 {
+            lo: self.lo.map(|l| fold(&l, f32::min)),
+            hi: self.hi.map(|h| fold(&h, f32::max)),
+        }
     }
 
     /// The box in lane `lane`.
@@ -127,43 +144,67 @@ fn up(x: f64) -> f32 {
     if f64::from(y) < x { y.next_up() } else { y }
 }
 
-/// The order of the `count` boxes `box_of(i)` along the Morton curve of their centres (ties by
-/// index, so the order is the same on every run).
-pub(crate) fn curve_order(count: usize, box_of: impl Fn(usize) -> Box32 + Sync) -> Vec<u32> {
-    let whole = (0..count)
-        .into_par_iter()
-        .map(&box_of)
-        .reduce_with(|a, b| a.union(&b))
-        .unwrap_or(Box32 {
-            lo: [0.0; 3],
-            hi: [0.0; 3],
+/// Cells of the Morton curve over a box: 2²¹ along each axis.
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct Frame {
+    lo: [f64; 3],
+    scale: [f64; 3],
+}
+
+impl Frame {
+    /// The frame over the box `[lo, hi]` (finite; an empty box gives one cell).
+    pub(crate) fn new(lo: [f64; 3], hi: [f64; 3]) -> Self {
+        let scale = [0, 1, 2].map(|k| {
+            let extent = hi[k] - lo[k];
+            if extent > 0.0 {
+                f64::from((1u32 << 21) - 1) / extent
+            } else {
+                0.0
+            }
         });
-    let lo = whole.lo.map(f64::from);
-    let scale = [0, 1, 2].map(|k| {
-        let extent = f64::from(whole.hi[k]) - lo[k];
-        if extent > 0.0 {
-            f64::from((1u32 << 21) - 1) / extent
-        } else {
-            0.0
-        }
-    });
-    let mut keyed: Vec<(u64, u32)> = (0..count)
+        Self { lo, scale }
+    }
+
+    /// The Morton code (63 bits) of the cell holding `p`; points outside the box go to the
+    /// nearest cell.
+    pub(crate) fn code(&self, p: [f64; 3]) -> u64 {
+        // `as` saturates (NaN to 0), so this never wraps.
+        let cell =
+            [0, 1, 2].map(|k| (((p[k] - self.lo[k]) * self.scale[k]) as u32).min((1 << 21) - 1));
+        spread(cell[0]) | spread(cell[1]) << 1 | spread(cell[2]) << 2
+    }
+}
+
+/// `entries` in the order of their keys `key(e)` (a 63-bit Morton code and a distinct index):
+/// a counting sort on the code's top bits, in input order, then each bucket sorted on its own,
+/// in parallel. The order of one sort on the keys, at a fraction of its passes.
+pub(crate) fn curve_sort<T: Copy + Send + Sync>(
+    entries: Vec<T>,
+    key: impl Fn(&T) -> (u64, u32) + Sync,
+) -> Vec<T> {
+    let Some(&first) = entries.first() else {
+        return entries;
+    };
+    let top = |e: &T| (key(e).0 >> (63 - TOP_BITS)) as usize;
+    let mut firsts = vec![0usize; (1 << TOP_BITS) + 1];
+    for e in &entries {
+        firsts[top(e) + 1] += 1;
+    }
+    for b in 0..1 << TOP_BITS {
+        firsts[b + 1] += firsts[b];
+    }
+    let mut fill = firsts.clone();
+    let mut sorted = vec![first; entries.len()];
+    for e in &entries {
+        let at = &mut fill[top(e)];
+        sorted[*at] = *e;
+        *at += 1;
+    }
+    drop(entries);
+    split_at(&mut sorted, &firsts[..1 << TOP_BITS])
         .into_par_iter()
-        .map(|i| {
-            let b = box_of(i);
-            let cell = [0, 1, 2].map(|k| {
-                let centre = (f64::from(b.lo[k]) + f64::from(b.hi[k])) * 0.5;
-                // Finite inputs give finite boxes; `as` saturates, so this never wraps.
-                ((centre - lo[k]) * scale[k]) as u32 & ((1 << 21) - 1)
-            });
-            (
-                spread(cell[0]) | spread(cell[1]) << 1 | spread(cell[2]) << 2,
-                i as u32,
-            )
-        })
-        .collect();
-    keyed.par_sort_unstable();
-    keyed.into_iter().map(|(_, i)| i).collect()
+        .for_each(|bucket| bucket.sort_unstable_by_key(&key));
+    sorted
 }
 
 /// The low 21 bits of `x` spread to every third bit.
@@ -185,12 +226,9 @@ pub(crate) struct LeafTree {
 }
 
 impl LeafTree {
-    /// The tree of `boxes` (in curve order), [`LEAF`] boxes per leaf.
-    pub(crate) fn new(boxes: &[Box32]) -> Self {
-        let leaves: Vec<Box32> = boxes
-            .par_chunks(LEAF)
-            .map(|c| c.iter().skip(1).fold(c[0], |a, b| a.union(b)))
-            .collect();
+    /// The tree over `leaves` (in curve order).
+    pub(crate) fn new(leaves: &[LeafBoxes]) -> Self {
+        let leaves: Vec<Box32> = leaves.par_iter().map(LeafBoxes::bounds).collect();
         let mut levels = vec![leaves];
         while levels.last().is_some_and(|l| l.len() > 1) {
             let next = levels
@@ -267,6 +305,44 @@ impl LeafTree {
 mod tests {
     use super::*;
 
+    /// The bucketed sort gives the order of one sort on (code, index), whatever the spread of
+    /// the codes: spread over the curve, all in one bucket, or on few distinct codes.
+    #[test]
+    fn curve_sort_is_one_sort_on_the_keys() {
+        let mut state = 7u64;
+        let mut next = || {
+            state = state
+                .wrapping_mul(6_364_136_223_846_793_005)
+                .wrapping_add(1_442_695_040_888_963_407);
+            state >> 1
+        };
+        for (n, mask) in [
+            (5000, u64::MAX >> 1),
+            (3000, 0xffff),
+            (3000, 0x7 << 59),
+            (1, 3),
+        ] {
+            let entries: Vec<(u64, u32)> = (0..n).map(|i| (next() & mask, i)).collect();
+            let mut want = entries.clone();
+            want.sort_unstable();
+            assert_eq!(curve_sort(entries, |e| *e), want, "{n} {mask:x}");
+        }
+        assert!(curve_sort(Vec::<(u64, u32)>::new(), |e| *e).is_empty());
+    }
+
+    /// Codes of a frame: the corners are the first and last cells, points outside go to the
+    /// nearest cell, and a flat box gives one cell along its flat axis.
+    #[test]
+    fn frame_codes_clamp_to_the_box() {
+        let frame = Frame::new([0.0, -1.0, 2.0], [1.0, 1.0, 2.0]);
+        let last = spread((1 << 21) - 1) | spread((1 << 21) - 1) << 1;
+        assert_eq!(frame.code([0.0, -1.0, 2.0]), 0);
+        assert_eq!(frame.code([1.0, 1.0, 5.0]), last);
+        assert_eq!(frame.code([9.0, 7.0, -3.0]), last);
+        assert_eq!(frame.code([-9.0, -7.0, 3.0]), 0);
+        assert!(frame.code([0.25, 0.0, 2.0]) < frame.code([0.75, 0.0, 2.0]));
+    }
+
     /// `meeting` agrees with `meets` lane by lane, on boxes drawn from a small lattice (so that
     /// touching faces and equal bounds are common), and empty lanes meet nothing.
     #[test]
@@ -289,7 +365,7 @@ mod tests {
         for round in 0..2000 {
             let lanes = 1 + round % LEAF;
             let boxes: Vec<Box32> = (0..lanes).map(|_| random_box()).collect();
-            let leaf = LeafBoxes::of(&boxes)[0];
+            let leaf = LeafBoxes::of(boxes.len(), |i| boxes[i])[0];
             let query = random_box();
             let mask = leaf.meeting(&query);
             for lane in 0..LEAF {

@@ -77,7 +77,10 @@ fn find_copies(
         let first = members.iter().take(limit + 1).map(|&(i, _)| i).collect();
         groups.insert(members[0].0, (members.len(), first));
     }
-    Copies { groups }
+    Copies {
+        groups,
+        ..Copies::default()
+    }
 }
 
 /// Reusable buffers of one worker.
