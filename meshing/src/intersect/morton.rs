@@ -9,8 +9,9 @@
 //! (cache-friendly). Each leaf is queried only against leaves at or after it, so every pair of
 //! boxes is visited once; the leaves of one node at level 2 ([`GROUP`] leaves) share one query
 //! with the node's box, and a box is tested against a leaf's four boxes at once
-//! ([`LeafBoxes::meeting`]).
+//! ([`LeafBoxes::meeting`], six four-lane vector compares).
 
+use glam::{BVec4A, Vec4};
 use rayon::prelude::*;
 
 use crate::stars::split_at;
@@ -62,13 +63,13 @@ impl Box32 {
     }
 }
 
-/// The boxes of one leaf side by side, one array per bound and axis (lanes past the last box
-/// hold an empty box, which meets nothing), so one box is tested against all four with no
-/// branch per lane.
+/// The boxes of one leaf side by side, one four-lane vector per bound and axis (lanes past the
+/// last box hold an empty box, which meets nothing), so one box is tested against all four with
+/// six vector compares ([`LeafBoxes::meeting`]).
 #[derive(Debug, Clone, Copy)]
 pub(crate) struct LeafBoxes {
-    lo: [[f32; LEAF]; 3],
-    hi: [[f32; LEAF]; 3],
+    lo: [Vec4; 3],
+    hi: [Vec4; 3],
 }
 
 impl LeafBoxes {
@@ -77,30 +78,28 @@ impl LeafBoxes {
         (0..count.div_ceil(LEAF))
             .into_par_iter()
             .map(|l| {
-                let mut leaf = Self {
-                    lo: [[f32::INFINITY; LEAF]; 3],
-                    hi: [[f32::NEG_INFINITY; LEAF]; 3],
-                };
+                let mut lo = [[f32::INFINITY; LEAF]; 3];
+                let mut hi = [[f32::NEG_INFINITY; LEAF]; 3];
                 for lane in 0..LEAF.min(count - l * LEAF) {
                     let b = box_of(l * LEAF + lane);
                     for k in 0..3 {
-                        leaf.lo[k][lane] = b.lo[k];
-                        leaf.hi[k][lane] = b.hi[k];
+                        lo[k][lane] = b.lo[k];
+                        hi[k][lane] = b.hi[k];
                     }
                 }
-                leaf
+                Self {
+                    lo: lo.map(Vec4::from_array),
+                    hi: hi.map(Vec4::from_array),
+                }
             })
             .collect()
     }
 
     /// The box of all its lanes (empty lanes add nothing).
     fn bounds(&self) -> Box32 {
-        let fold = |lanes: &[f32; LEAF], f: fn(f32, f32) -> f32| {
-            lanes.iter().copied().reduce(f).unwrap_or(f32::NAN)
-        };
         Box32 {
-            lo: self.lo.map(|l| fold(&l, f32::min)),
-            hi: self.hi.map(|h| fold(&h, f32::max)),
+            lo: self.lo.map(Vec4::min_element),
+            hi: self.hi.map(Vec4::max_element),
         }
     }
 
@@ -116,19 +115,12 @@ impl LeafBoxes {
     /// Bit `lane` set for every lane whose box meets `b` (closed boxes, as [`Box32::meets`]).
     #[inline]
     pub(crate) fn meeting(&self, b: &Box32) -> u32 {
-        // Lane by lane over whole arrays, with `&` rather than `&&`: no branch per comparison,
-        // and a shape the compiler turns into vector compares.
-        let mut meets = [true; LEAF];
+        let mut meets = BVec4A::splat(true);
         for k in 0..3 {
-            let (lo, hi) = (&self.lo[k], &self.hi[k]);
-            for lane in 0..LEAF {
-                meets[lane] &= (b.lo[k] <= hi[lane]) & (lo[lane] <= b.hi[k]);
-            }
+            meets &=
+                Vec4::splat(b.lo[k]).cmple(self.hi[k]) & self.lo[k].cmple(Vec4::splat(b.hi[k]));
         }
-        meets
-            .iter()
-            .enumerate()
-            .fold(0, |mask, (lane, &m)| mask | u32::from(m) << lane)
+        meets.bitmask()
     }
 }
 
