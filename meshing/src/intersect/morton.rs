@@ -296,18 +296,14 @@ impl LeafTree {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::intersect::tests_reference::Lcg;
 
     /// The bucketed sort gives the order of one sort on (code, index), whatever the spread of
     /// the codes: spread over the curve, all in one bucket, or on few distinct codes.
     #[test]
     fn curve_sort_is_one_sort_on_the_keys() {
-        let mut state = 7u64;
-        let mut next = || {
-            state = state
-                .wrapping_mul(6_364_136_223_846_793_005)
-                .wrapping_add(1_442_695_040_888_963_407);
-            state >> 1
-        };
+        let mut rng = Lcg(7);
+        let mut next = || rng.bits() >> 1;
         for (n, mask) in [
             (5000, u64::MAX >> 1),
             (3000, 0xffff),
@@ -339,13 +335,8 @@ mod tests {
     /// touching faces and equal bounds are common), and empty lanes meet nothing.
     #[test]
     fn four_lanes_agree_with_the_box_test() {
-        let mut state = 99u64;
-        let mut next = || {
-            state = state
-                .wrapping_mul(6_364_136_223_846_793_005)
-                .wrapping_add(1_442_695_040_888_963_407);
-            ((state >> 33) % 6) as f32
-        };
+        let mut rng = Lcg(99);
+        let mut next = || ((rng.bits() >> 33) % 6) as f32;
         let mut random_box = || {
             let (a, b) = ([next(), next(), next()], [next(), next(), next()]);
             Box32 {

@@ -47,13 +47,18 @@ fn broken_suite_agrees() {
 pub(super) struct Lcg(pub(super) u64);
 
 impl Lcg {
-    /// The next number in `[0, 1)`.
-    pub(super) fn unit(&mut self) -> f64 {
+    /// The next state, all 64 bits.
+    pub(super) fn bits(&mut self) -> u64 {
         self.0 = self
             .0
             .wrapping_mul(6_364_136_223_846_793_005)
             .wrapping_add(1_442_695_040_888_963_407);
-        (self.0 >> 11) as f64 / (1u64 << 53) as f64
+        self.0
+    }
+
+    /// The next number in `[0, 1)`.
+    pub(super) fn unit(&mut self) -> f64 {
+        (self.bits() >> 11) as f64 / (1u64 << 53) as f64
     }
 }
 
