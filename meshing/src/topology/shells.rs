@@ -63,26 +63,24 @@ impl Shells {
                 order
             })
             .collect();
-        let mut number_of_root = vec![NONE; roots.len()];
+        // Each root's number plus one, at the root's index: zeroed pages, of which only those
+        // holding roots are ever touched (a filled vertex-size array was a serial pass of its
+        // own). The roots then become the numbers in place.
+        let mut number_of_root = vec![0u32; roots.len()];
         let mut count = 0usize;
         for r in firsts.into_iter().flatten() {
             let slot = &mut number_of_root[r as usize];
-            if *slot == NONE {
-                *slot = u32::try_from(count).unwrap_or(NONE);
+            if *slot == 0 {
                 count += 1;
+                *slot = u32::try_from(count).unwrap_or(NONE);
             }
         }
-        let of_vertex = roots
-            .par_iter()
-            .with_min_len(4096)
-            .map(|&r| {
-                if r == NONE {
-                    NONE
-                } else {
-                    number_of_root[r as usize]
-                }
-            })
-            .collect();
+        let mut of_vertex = roots;
+        of_vertex.par_iter_mut().with_min_len(4096).for_each(|r| {
+            if *r != NONE {
+                *r = number_of_root[*r as usize] - 1;
+            }
+        });
         Self { of_vertex, count }
     }
 
