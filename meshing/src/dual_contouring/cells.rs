@@ -55,7 +55,7 @@ pub(crate) struct FaceKey {
 }
 
 /// A surface cell found through the block index.
-#[derive(Debug, Clone, Copy)]
+#[derive(Debug, Clone, Copy, Default)]
 pub(crate) struct CellRef {
     pub block: usize,
     pub local: usize,
@@ -70,14 +70,46 @@ pub(crate) struct Cells<'a> {
     pub blocks: &'a [Block],
     pub index: BlockIndex,
     pub bases: Vec<u32>,
-    pub block_size: usize,
+    /// log2 of the block size (a power of two).
+    shift: u32,
 }
 
-impl Cells<'_> {
+impl<'a> Cells<'a> {
+    /// The cells of `blocks` (`dims` blocks per axis of `block_size`³ cells, a power of two;
+    /// `bases`: the global number of each block's first patch vertex).
+    pub fn new(blocks: &'a [Block], dims: [usize; 3], bases: Vec<u32>, block_size: usize) -> Self {
+        assert!(block_size.is_power_of_two(), "block size {block_size}");
+        Cells {
+            blocks,
+            index: BlockIndex::new(blocks, dims),
+            bases,
+            shift: block_size.trailing_zeros(),
+        }
+    }
+
+    /// The surface cell at global coordinates `c`, if any.
     pub fn get(&self, c: [usize; 3]) -> Option<CellRef> {
-        let b = self.index.get(c.map(|x| x / self.block_size))?;
+        let b = self.index.get(c.map(|x| x >> self.shift))?;
+        self.in_block(b, c)
+    }
+
+    /// [`Cells::get`], looking first in block `hint` (most cells a block's edges meet are its own).
+    #[inline]
+    pub fn get_near(&self, hint: usize, c: [usize; 3]) -> Option<CellRef> {
+        let o = &self.blocks[hint];
+        let inside = (0..3).all(|a| c[a].wrapping_sub(o.min[a]) < o.extent[a]);
+        if inside {
+            self.in_block(hint, c)
+        } else {
+            self.get(c)
+        }
+    }
+
+    /// Cell `c` of block `b`, if it lies in the block and has surface.
+    #[inline]
+    fn in_block(&self, b: usize, c: [usize; 3]) -> Option<CellRef> {
         let o = &self.blocks[b];
-        let l = [0, 1, 2].map(|a| c[a] - o.min[a]);
+        let l = [0, 1, 2].map(|a| c[a].wrapping_sub(o.min[a]));
         if (0..3).any(|a| l[a] >= o.extent[a]) {
             return None;
         }

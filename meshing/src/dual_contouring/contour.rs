@@ -4,10 +4,10 @@
 //! a side crosses a split face or is routed, [`super::faces`]); then places the face vertices.
 
 use super::block::{Block, OwnedEdge};
-use super::cells::{BlockIndex, CellRef, Cells, FaceKey};
+use super::cells::{CellRef, Cells, FaceKey};
 use super::certify::{EPS, EdgeFrame, FaceKind, RingFace, certify};
 use super::faces::{DualFace, face_vertex};
-use super::patches::{NO_PATCH, edge_number, face_segment, patch_table};
+use super::patches::{Config, NO_PATCH, edge_number, face_segment, patch_table};
 use super::probe::{BatchScratch, Probe, evaluate};
 use crate::grid::GridSpec;
 use glam::DVec3;
@@ -70,15 +70,11 @@ pub(crate) fn assemble<P: Probe>(
         bases.push(count);
         count += b.vertices.len() as u32;
     }
-    let cells = Cells {
-        blocks,
-        index: BlockIndex::new(blocks, dims),
-        bases: bases.clone(),
-        block_size,
-    };
+    let cells = Cells::new(blocks, dims, bases.clone(), block_size);
     let per_block: Vec<BlockPolygons> = blocks
         .par_iter()
-        .map_init(BlockScratch::<P::Scratch>::default, |scratch, b| {
+        .enumerate()
+        .map_init(BlockScratch::<P::Scratch>::default, |scratch, (bi, b)| {
             let mut quads = Vec::with_capacity(b.edges.len());
             let mut specials = Vec::new();
             let mut dropped = 0;
@@ -86,10 +82,8 @@ pub(crate) fn assemble<P: Probe>(
             scratch.rings.clear();
             scratch.requests.clear();
             for e in &b.edges {
-                let r = ring(b, e, &cells, spec);
-                if let Some(Ok(r)) = &r
-                    && let Some(fold) = &r.fold
-                {
+                let (r, fold) = ring(bi, e, &cells, spec);
+                if let Some(fold) = fold {
                     scratch.requests.extend(fold);
                 }
                 scratch.rings.push(r);
@@ -103,18 +97,18 @@ pub(crate) fn assemble<P: Probe>(
             let mut values = scratch.values.iter();
             for (r, e) in scratch.rings.drain(..).zip(&b.edges) {
                 match r {
-                    Some(Ok(r)) => {
-                        let fold = r.fold.map(|_| {
+                    Around::Quad(r) => {
+                        let fold = r.folded.then(|| {
                             let mut next = || values.next().expect("one value per midpoint").abs();
                             (next(), next())
                         });
                         match finish(&r, fold) {
-                            Ok(q) => quads.push(q),
-                            Err(corners) => specials.push((corners, e.point)),
+                            Some(q) => quads.push(q),
+                            None => specials.push((r.ids.map(Corner::Vertex).to_vec(), e.point)),
                         }
                     }
-                    Some(Err(corners)) => specials.push((corners, e.point)),
-                    None => dropped += 1,
+                    Around::Fan(corners) => specials.push((corners, e.point)),
+                    Around::Open => dropped += 1,
                 }
             }
             (quads, specials, dropped)
@@ -169,82 +163,106 @@ pub(crate) fn assemble<P: Probe>(
 /// Buffers of one worker of [`assemble`].
 #[derive(Default)]
 struct BlockScratch<S> {
-    rings: Vec<Option<Result<Ring, Vec<Corner>>>>,
+    rings: Vec<Around>,
     requests: Vec<(usize, DVec3)>,
     values: Vec<f64>,
     batch: BatchScratch<S>,
 }
 
-/// A crossing edge's ring of four cells that may become a quad: everything [`finish`] needs.
+/// A crossing edge's ring of four cells that may become a quad: everything [`finish`] needs
+/// (kept small: every owned edge's ring waits for the batched field values).
 struct Ring {
-    /// The four cells (global coordinates and references), counter-clockwise from outside.
-    refs: [([usize; 3], CellRef); 4],
+    /// The configurations of the four cells, counter-clockwise from outside.
+    configs: [Config; 4],
     /// The crossing edge's number within each cell.
     edge_in_cell: [u8; 4],
     /// Each cell's offset below the edge along the two other axes.
-    around: [(usize, usize); 4],
+    around: [(u8, u8); 4],
     faces: [RingFace; 4],
-    /// The fan's corners, should the quad be refused.
-    corners: [Corner; 8],
-    count: usize,
-    /// Vertex ids and positions.
+    /// Vertex ids (the fan's corners, should the quad be refused) and positions.
     ids: [u32; 4],
     p: [DVec3; 4],
     frame: EdgeFrame,
     normal: DVec3,
     /// The diagonal that agrees better with the normal.
     other_diagonal: bool,
-    /// A folded quad's two diagonal midpoints, each with the block whose cell holds it.
-    fold: Option<[(usize, DVec3); 2]>,
+    /// A folded quad: its two diagonal midpoints are being evaluated.
+    folded: bool,
 }
 
-/// The ring around owned edge `e`: `Ok` for a quad still to be certified ([`finish`]), `Err`
-/// with its corners (cell vertices and any face vertices) for a fan from the crossing, `None`
-/// when a cell around it lies outside the grid.
-fn ring(
-    b: &Block,
+/// A folded quad's two diagonal midpoints, each with the block whose cell holds it.
+type Fold = [(usize, DVec3); 2];
+
+/// What an owned crossing edge's ring of cells gives.
+enum Around {
+    /// A quad still to be certified ([`finish`]).
+    Quad(Ring),
+    /// A fan from the crossing through these corners (cell vertices and any face vertices).
+    Fan(Vec<Corner>),
+    /// A cell around the edge lies outside the grid: no polygon.
+    Open,
+}
+
+/// The ring around owned edge `e` (of block `bi`), with the fold of a folded quad.
+fn ring(bi: usize, e: &OwnedEdge, cells: &Cells, spec: &GridSpec) -> (Around, Option<Fold>) {
+    ring_cells(bi, e, cells, spec).unwrap_or((Around::Open, None))
+}
+
+/// [`ring`], `None` for [`Around::Open`].
+fn ring_cells(
+    bi: usize,
     e: &OwnedEdge,
     cells: &Cells,
     spec: &GridSpec,
-) -> Option<Result<Ring, Vec<Corner>>> {
+) -> Option<(Around, Option<Fold>)> {
     let table = patch_table();
+    let b = &cells.blocks[bi];
     let axis = e.axis as usize;
     let (u, v) = ((axis + 1) % 3, (axis + 2) % 3);
+    // Coordinate arrays are built whole (`map`), not patched at a computed index: a patched
+    // array read back whole stalls on store forwarding.
     let g = [0, 1, 2].map(|a| b.min[a] + e.sample[a] as usize);
     if g[u] == 0 || g[v] == 0 || g[u] > spec.cells[u] || g[v] > spec.cells[v] {
         return None;
     }
     // Cells counter-clockwise around +axis; reversed when the normal points along -axis.
-    let mut around = [(1usize, 1usize), (0, 1), (0, 0), (1, 0)];
+    let mut around = [(1u8, 1u8), (0, 1), (0, 0), (1, 0)];
     if !e.lower_inside {
         around.reverse();
     }
-    let mut refs = [None; 4];
+    // The cells' coordinates and references, as separate arrays read field by field (whole
+    // `Option<(coordinates, reference)>` copies compiled to wide reloads of narrow stores).
+    let mut cs = [[0usize; 3]; 4];
+    let mut rs = [CellRef::default(); 4];
     let mut edge_in_cell = [0u8; 4];
     for (k, &(du, dv)) in around.iter().enumerate() {
         // (du, dv) = 1 means the cell lies below the edge along that axis.
-        let mut c = g;
-        c[u] -= du;
-        c[v] -= dv;
+        let o = [0, 1, 2].map(|a| {
+            usize::from(if a == u {
+                du
+            } else if a == v {
+                dv
+            } else {
+                0
+            })
+        });
+        let c = [0, 1, 2].map(|a| g[a] - o[a]);
         if c[u] >= spec.cells[u] || c[v] >= spec.cells[v] || c[axis] >= spec.cells[axis] {
             return None;
         }
-        let r = cells.get(c)?;
-        let mut o = [0usize; 3];
-        o[u] = du;
-        o[v] = dv;
+        let r = cells.get_near(bi, c)?;
         edge_in_cell[k] = edge_number(axis, o);
-        refs[k] = Some((c, r));
+        cs[k] = c;
+        rs[k] = r;
     }
-    let refs = refs.map(|r| r.expect("set"));
     let vertex = |k: usize| {
-        let (_, r) = refs[k];
+        let r = &rs[k];
         let p = table.get(r.config).patch_of_edge[edge_in_cell[k] as usize];
         debug_assert_ne!(p, NO_PATCH);
         r.first + p as u32
     };
     let position = |k: usize| {
-        let (_, r) = refs[k];
+        let r = &rs[k];
         let o = &cells.blocks[r.block];
         let p = table.get(r.config).patch_of_edge[edge_in_cell[k] as usize];
         o.vertices[(o.first[r.local] + p as u32) as usize]
@@ -255,9 +273,9 @@ fn ring(
         axes: [u, v, axis],
     };
     let inside_at = |k: usize, s: [usize; 3]| {
-        let (c, r) = refs[k];
+        let c = &cs[k];
         let o = [0, 1, 2].map(|a| s[a] - c[a]);
-        r.config >> (o[0] | o[1] << 1 | o[2] << 2) & 1 == 1
+        rs[k].config >> (o[0] | o[1] << 1 | o[2] << 2) & 1 == 1
     };
     let several = |r: &CellRef| table.get(r.config).edges.len() > 1;
     // At most four cell vertices and four face vertices; a vector only for fans.
@@ -272,20 +290,19 @@ fn ring(
         corners[count] = Corner::Vertex(vertex(k));
         count += 1;
         let l = (k + 1) % 4;
-        let ((ca, ra), (cb, rb)) = (refs[k], refs[l]);
+        let (ca, cb, ra, rb) = (&cs[k], &cs[l], &rs[k], &rs[l]);
         let fa = (0..3).find(|&a| ca[a] != cb[a]).expect("neighbours");
         // The face's far corners (away from the edge, within the face).
         let w = if fa == u { v } else { u };
-        let mut f0 = g;
-        f0[w] = if ca[w] == g[w] { g[w] + 1 } else { g[w] - 1 };
-        let mut f1 = f0;
-        f1[axis] += 1;
+        let far = if ca[w] == g[w] { g[w] + 1 } else { g[w] - 1 };
+        let f0 = [0, 1, 2].map(|a| if a == w { far } else { g[a] });
+        let f1 = [0, 1, 2].map(|a| f0[a] + usize::from(a == axis));
         let (lower, upper, lower_k, upper_k) = if ca[fa] < cb[fa] {
             (ra, rb, k, l)
         } else {
             (rb, ra, l, k)
         };
-        let lower_cell = if lower_k == k { ca } else { cb };
+        let lower_cell = if lower_k == k { *ca } else { *cb };
         let bit_hi = 1 << (2 * fa + 1);
         let bit_lo = 1 << (2 * fa);
         // Both cells decide the shared face alike (same four samples); the lower cell's word
@@ -323,7 +340,7 @@ fn ring(
             fan = true;
             corners[count] = key;
             count += 1;
-        } else if ambiguous || several(&lower) || several(&upper) {
+        } else if ambiguous || several(lower) || several(upper) {
             let face = DualFace::new(
                 (lower.config, lower_cell),
                 upper.config,
@@ -340,7 +357,7 @@ fn ring(
         }
     }
     if fan {
-        return Some(Err(corners[..count].to_vec()));
+        return Some((Around::Fan(corners[..count].to_vec()), None));
     }
     let p = [0, 1, 2, 3].map(position);
     // A folded quad: the diagonal whose midpoint lies nearer the surface keeps the crease
@@ -348,38 +365,42 @@ fn ring(
     let (m0, m1) = (0.5 * (p[0] + p[2]), 0.5 * (p[1] + p[3]));
     let fold = ((m0 - m1).length() > FOLD * spec.cell).then(|| {
         [m0, m1].map(|m| {
-            let mut c = [0, 1, 2].map(|a| ((m[a] - spec.origin[a]) / spec.cell).floor());
-            c[axis] = g[axis] as f64;
-            c[u] = c[u].clamp(g[u] as f64 - 1.0, g[u] as f64);
-            c[v] = c[v].clamp(g[v] as f64 - 1.0, g[v] as f64);
-            let c = c.map(|x| x as usize);
-            let r = cells.get(c).expect("the four cells are surface cells");
+            let c = [0, 1, 2].map(|a| {
+                if a == axis {
+                    g[a]
+                } else {
+                    let x = ((m[a] - spec.origin[a]) / spec.cell).floor();
+                    x.clamp(g[a] as f64 - 1.0, g[a] as f64) as usize
+                }
+            });
+            let r = cells
+                .get_near(bi, c)
+                .expect("the four cells are surface cells");
             (r.block, m)
         })
     });
-    Some(Ok(Ring {
-        refs,
+    let ring = Ring {
+        configs: rs.map(|r| r.config),
         edge_in_cell,
         around,
         faces,
-        corners,
-        count,
         ids: [0, 1, 2, 3].map(vertex),
         p,
         frame,
         normal: e.normal,
         other_diagonal: better_by_normal(&p, e.normal),
-        fold,
-    }))
+        folded: fold.is_some(),
+    };
+    Some((Around::Quad(ring), fold))
 }
 
 /// A ring's quad, split along the diagonal whose midpoint has the smaller `|field|` (`fold`, for
 /// folded quads) unless that flips a triangle, else along the one agreeing better with the
 /// normal, when the certificate shows its two triangles stay clear of every other triangle;
-/// else the fan's corners.
-fn finish(r: &Ring, fold: Option<(f64, f64)>) -> Result<Quad, Vec<Corner>> {
+/// else `None` (a fan from the crossing through the four cell vertices).
+fn finish(r: &Ring, fold: Option<(f64, f64)>) -> Option<Quad> {
     let table = patch_table();
-    let (p, [u, v, axis]) = (&r.p, r.frame.axes);
+    let (p, [u, v, _]) = (&r.p, r.frame.axes);
     let mut other_diagonal = r.other_diagonal;
     if let Some((f0, f1)) = fold {
         let flips = |t: [[usize; 3]; 2]| {
@@ -396,17 +417,21 @@ fn finish(r: &Ring, fold: Option<(f64, f64)>) -> Result<Quad, Vec<Corner>> {
     // from the crossing, which always does (see `certify`).
     // In cells with several patches the pieces must also keep to their patch's side.
     let seps = [0, 1, 2, 3].map(|k| {
-        let (_, c) = r.refs[k];
-        let c = table.get(c.config);
+        let c = table.get(r.configs[k]);
         c.separators[c.patch_of_edge[r.edge_in_cell[k] as usize] as usize].as_slice()
     });
     let side = |k: usize, x: DVec3| {
         // Local edge coordinates to ring cell k's unit coordinates.
         let (du, dv) = r.around[k];
-        let mut unit = DVec3::ZERO;
-        unit[u] = x.x + du as f64;
-        unit[v] = x.y + dv as f64;
-        unit[axis] = x.z;
+        let unit = DVec3::from_array([0, 1, 2].map(|a| {
+            if a == u {
+                x.x + f64::from(du)
+            } else if a == v {
+                x.y + f64::from(dv)
+            } else {
+                x.z
+            }
+        }));
         seps[k].iter().all(|s| s.value(unit) < -EPS)
     };
     let side: Option<&dyn Fn(usize, DVec3) -> bool> = if seps.iter().any(|s| !s.is_empty()) {
@@ -414,15 +439,11 @@ fn finish(r: &Ring, fold: Option<(f64, f64)>) -> Result<Quad, Vec<Corner>> {
     } else {
         None
     };
-    if certify(&p.map(|x| r.frame.local(x)), &r.faces, other_diagonal, side) {
-        Ok(Quad {
-            v: r.ids,
-            normal: r.normal,
-            other_diagonal,
-        })
-    } else {
-        Err(r.corners[..r.count].to_vec())
-    }
+    certify(&p.map(|x| r.frame.local(x)), &r.faces, other_diagonal, side).then_some(Quad {
+        v: r.ids,
+        normal: r.normal,
+        other_diagonal,
+    })
 }
 
 /// Quads whose diagonal midpoints are further apart than this (in cells) are folded: their

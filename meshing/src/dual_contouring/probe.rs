@@ -79,8 +79,8 @@ pub(crate) fn evaluate<P: Probe>(
     out.resize(requests.len(), 0.0);
     s.order.clear();
     s.order.extend(0..requests.len() as u32);
-    s.order
-        .sort_unstable_by_key(|&k| (requests[k as usize].0, k));
+    // Stable, so each block's requests stay in request order (most are the asking block's).
+    s.order.sort_by_key(|&k| requests[k as usize].0);
     for run in s
         .order
         .chunk_by(|&a, &b| requests[a as usize].0 == requests[b as usize].0)
