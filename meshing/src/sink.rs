@@ -103,7 +103,7 @@ impl VertexIds {
 
 /// Appends `lens.iter().sum()` elements to `out`, block `i` written by `fill(i, …)`, the blocks in
 /// parallel (rayon); the new elements start as `zero` (written in parallel too).
-fn extend_in_blocks<T: Copy + Send + Sync>(
+pub(crate) fn extend_in_blocks<T: Copy + Send + Sync>(
     out: &mut Vec<T>,
     zero: T,
     lens: &[usize],

@@ -10,6 +10,7 @@ use super::faces::{DualFace, face_vertex};
 use super::patches::{Config, NO_PATCH, edge_number, face_segment, patch_table};
 use super::probe::{BatchScratch, Probe, evaluate};
 use crate::grid::GridSpec;
+use crate::sink::extend_in_blocks;
 use glam::DVec3;
 use rayon::prelude::*;
 
@@ -43,7 +44,7 @@ pub(crate) struct Special {
 /// Every vertex and polygon of a contour.
 #[derive(Debug, Default)]
 pub(crate) struct Contour {
-    /// Cell patch vertices (block by block), then split-face vertices.
+    /// Cell patch vertices (block by block), then split-face vertices (the caller takes them).
     pub positions: Vec<DVec3>,
     /// First cell patch vertex of each block.
     pub bases: Vec<u32>,
@@ -114,10 +115,11 @@ pub(crate) fn assemble<P: Probe>(
             (quads, specials, dropped)
         })
         .collect();
-    let mut positions: Vec<DVec3> = Vec::with_capacity(count as usize);
-    for b in blocks {
-        positions.extend_from_slice(&b.vertices);
-    }
+    let mut positions: Vec<DVec3> = Vec::new();
+    let lens: Vec<usize> = blocks.iter().map(|b| b.vertices.len()).collect();
+    extend_in_blocks(&mut positions, DVec3::ZERO, &lens, &|i, out| {
+        out.copy_from_slice(&blocks[i].vertices);
+    });
     let mut keys: Vec<FaceKey> = per_block
         .iter()
         .flat_map(|(_, s, _)| s.iter().flat_map(|(c, _)| c.iter()))

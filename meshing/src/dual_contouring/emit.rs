@@ -7,6 +7,7 @@
 //! consecutive corners merge and polygons left with fewer than three corners vanish.
 
 use super::contour::{Contour, FIRST, Quad, SECOND, better_by_normal};
+use crate::sink::extend_in_blocks;
 use glam::DVec3;
 
 /// Triangles of a contour (vertex ids into `positions`, which gains the polygon centres).
@@ -16,9 +17,19 @@ pub(crate) fn triangles(
     map: Option<&[u32]>,
 ) -> Vec<[u32; 3]> {
     let m = |v: u32| map.map_or(v, |m| m[v as usize]);
-    let mut out = Vec::with_capacity(2 * c.quads.iter().map(Vec::len).sum::<usize>());
+    let mut out = Vec::new();
     let mut ring: Vec<u32> = Vec::with_capacity(8);
-    for quads in &c.quads {
+    if map.is_none() {
+        // Every quad as it stands: two triangles each, the blocks written in parallel.
+        let lens: Vec<usize> = c.quads.iter().map(|q| 2 * q.len()).collect();
+        extend_in_blocks(&mut out, [0; 3], &lens, &|i, out| {
+            for (pair, q) in out.chunks_exact_mut(2).zip(&c.quads[i]) {
+                pair.copy_from_slice(&split_quad(q, &[], true));
+            }
+        });
+    }
+    let mapped: &[Vec<Quad>] = if map.is_some() { &c.quads } else { &[] };
+    for quads in mapped {
         for q in quads {
             ring.clear();
             ring.extend(q.v.iter().map(|&v| m(v)));

@@ -99,8 +99,9 @@ pub fn mesh_dc_into<E: Evaluator>(
     let t = now(opts.sparse.clock.as_ref());
     let brick = opts.sparse.brick_size();
     let probe = probe::ProgramProbe(&evaluators);
-    let contour = contour::assemble(&blocks, &spec, brick, &probe);
-    let mut positions = contour.positions.clone();
+    let mut contour = contour::assemble(&blocks, &spec, brick, &probe);
+    // Taken, not copied: neither the emission nor the simplification reads them from `contour`.
+    let mut positions = std::mem::take(&mut contour.positions);
     let triangles = match opts.tolerance {
         Some(tol) => {
             let dims = spec.cells.map(|c| c.div_ceil(brick).max(1));
@@ -136,8 +137,8 @@ pub fn mesh_dc_samples<F: Evaluator>(
 ) -> IndexedMesh {
     const TILE: usize = 8;
     let blocks = sources::dense_blocks(field, samples, TILE, tolerance.is_some());
-    let contour = contour::assemble(&blocks, &samples.spec, TILE, &probe::FieldProbe(field));
-    let mut positions = contour.positions.clone();
+    let mut contour = contour::assemble(&blocks, &samples.spec, TILE, &probe::FieldProbe(field));
+    let mut positions = std::mem::take(&mut contour.positions);
     let triangles = match tolerance {
         Some(tol) => {
             let mut signs = samples;
@@ -162,8 +163,11 @@ fn write(positions: &[DVec3], triangles: &[[u32; 3]], sink: &mut impl MeshSink) 
     /// Vertices or triangles per parallel block.
     const BLOCK: usize = 1 << 16;
     let used: Vec<AtomicBool> = positions.iter().map(|_| AtomicBool::new(false)).collect();
-    triangles.par_iter().flatten().for_each(|&v| {
-        used[v as usize].store(true, Ordering::Relaxed);
+    // In blocks: a flattened parallel iterator splits down to single triangles.
+    triangles.par_chunks(BLOCK).for_each(|c| {
+        for &v in c.as_flattened() {
+            used[v as usize].store(true, Ordering::Relaxed);
+        }
     });
     let used: Vec<bool> = used.into_iter().map(AtomicBool::into_inner).collect();
     // Each used vertex's rank among the used ones, block by block in parallel.
