@@ -6,8 +6,10 @@
 //! most 1 and √2 (e.g. `∂g/∂x = (cos x, −sin x)·(cos y, sin z)`), so `|∇f| ≤ √6`, the Lipschitz
 //! bound reported. Intervals use exact ranges of sin and cos over intervals. The single-precision
 //! batch path uses branch-free polynomial sine (vectorised by the compiler), accurate to 1e-6 plus
-//! the single-precision rounding of the argument.
+//! the single-precision rounding of the argument; the double-precision paths use [`sincos_f64`]
+//! (a few ulps from the C library's values, without its rounding-mode switches).
 
+use super::sincos::sincos_f64;
 use super::{PrimitiveError, Shape, positive};
 use crate::{Aabb, Interval};
 use glam::DVec3;
@@ -20,11 +22,11 @@ pub struct Gyroid {
     pub thickness: f64,
 }
 
-/// Sines and cosines of the three coordinates: every double-precision path (value, gradient,
-/// both at once) takes them from here, so they agree bit for bit.
+/// Sines and cosines of the three coordinates ([`sincos_f64`]): every double-precision path
+/// (value, gradient, both at once) takes them from here, so they agree bit for bit.
 #[inline]
 fn sin_cos(p: DVec3) -> [(f64, f64); 3] {
-    [p.x.sin_cos(), p.y.sin_cos(), p.z.sin_cos()]
+    [sincos_f64(p.x), sincos_f64(p.y), sincos_f64(p.z)]
 }
 
 /// `g` from the coordinates' sines and cosines.

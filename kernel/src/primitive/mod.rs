@@ -29,6 +29,7 @@ pub mod heightfield;
 mod plane;
 mod polyhedron;
 pub mod quadric;
+mod sincos;
 mod sphere;
 pub mod sweep;
 mod torus;
@@ -47,6 +48,7 @@ pub use polyhedron::{
 };
 pub use polyhedron::{SubdivisionInput, SubdivisionRequest, SubdivisionScheme};
 pub use quadric::{Ellipsoid, Quadric};
+pub use sincos::sincos_f64;
 pub use sphere::Sphere;
 pub use sweep::{Extrude, Loft, Revolve, Ruled, RuledSurface, Sweep};
 pub use torus::Torus;
