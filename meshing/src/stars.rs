@@ -8,9 +8,10 @@
 //! builds the stars once for both.
 //!
 //! Built by a counting sort into one array (eight bytes per corner, no hashing). The work is
-//! split into vertex ranges; each range scans every triangle and fills only its own stars, so no
-//! two threads write one place and each star lists its triangles in ascending triangle order
-//! whatever the thread count (the result is deterministic).
+//! split into vertex ranges; each range scans the triangles that may use it (the chunks whose
+//! vertex span meets the range) and fills only its own stars, so no two threads write one place
+//! and each star lists its triangles in ascending triangle order whatever the thread count (the
+//! result is deterministic).
 
 use std::borrow::Cow;
 
@@ -53,6 +54,16 @@ impl Stars {
     /// triangle order. No other array of vertex size.
     pub(crate) fn build(triangles: &[[u32; 3]], vertex_count: usize) -> Self {
         let ranges = vertex_ranges(vertex_count);
+        let spans = chunk_spans(triangles, ranges.len());
+        // The chunks of triangles that may use a vertex of `range`, with their numbers.
+        let chunks_for = |range: &std::ops::Range<usize>| {
+            let (lo, hi) = (range.start as u32, range.end as u32);
+            triangles
+                .chunks(CHUNK)
+                .zip(&spans)
+                .filter(move |&(_, &(min, max))| max >= lo && min < hi)
+                .map(|(c, _)| c)
+        };
         let mut starts = vec![0usize; vertex_count + 1];
         let firsts: Vec<usize> = ranges.iter().map(|r| r.start).collect();
         let mut pieces = split_at(&mut starts[..vertex_count], &firsts);
@@ -60,7 +71,7 @@ impl Stars {
             .par_iter_mut()
             .zip(&ranges)
             .map(|(piece, range)| {
-                for &v in triangles.as_flattened() {
+                for &v in chunks_for(range).flat_map(<[[u32; 3]]>::as_flattened) {
                     if range.contains(&(v as usize)) {
                         piece[v as usize - range.start] += 1;
                     }
@@ -93,7 +104,8 @@ impl Stars {
             .zip(pieces)
             .zip(ranges.par_iter().zip(&bases))
             .for_each(|((links, ends), (range, &base))| {
-                for tri in triangles.iter().rev() {
+                let chunks: Vec<&[[u32; 3]]> = chunks_for(range).collect();
+                for tri in chunks.iter().rev().flat_map(|c| c.iter().rev()) {
                     for k in 0..3 {
                         let v = tri[k] as usize;
                         if range.contains(&v) {
@@ -124,6 +136,27 @@ impl Stars {
     }
 }
 
+/// Triangles per chunk of [`chunk_spans`].
+const CHUNK: usize = 1 << 14;
+
+/// The lowest and highest vertex of each chunk of [`CHUNK`] triangles, so that a vertex range
+/// scans only the chunks that may use it: meshers number vertices and triangles in the same
+/// spatial order, so each range meets few chunks (a mesh in random order meets them all, as
+/// without the spans). With one range every chunk is scanned anyway and none is computed.
+fn chunk_spans(triangles: &[[u32; 3]], ranges: usize) -> Vec<(u32, u32)> {
+    if ranges < 2 {
+        return vec![(0, u32::MAX); triangles.len().div_ceil(CHUNK)];
+    }
+    triangles
+        .par_chunks(CHUNK)
+        .map(|c| {
+            c.as_flattened()
+                .iter()
+                .fold((u32::MAX, 0), |(lo, hi), &v| (lo.min(v), hi.max(v)))
+        })
+        .collect()
+}
+
 /// Vertex ranges, one per piece of work and thread, so the scans over all triangles that each
 /// range makes stay few.
 fn vertex_ranges(vertex_count: usize) -> Vec<std::ops::Range<usize>> {
@@ -150,7 +183,57 @@ pub(crate) fn split_at<'a, T>(items: &'a mut [T], firsts: &[usize]) -> Vec<&'a m
 
 #[cfg(test)]
 mod tests {
-    use super::Stars;
+    use super::{CHUNK, Stars};
+
+    #[test]
+    fn stars_over_many_chunks_match_a_direct_filing() {
+        // Three parts: vertices in triangle order (each range meets few chunks), at random (every
+        // chunk), and in reverse order; several chunks each.
+        let n = 3 * CHUNK + 77;
+        let vertex_count = 40_000;
+        let mut seed = 7u64;
+        let mut random = || {
+            seed = seed.wrapping_mul(6_364_136_223_846_793_005).wrapping_add(1);
+            (seed >> 33) as u32 % vertex_count as u32
+        };
+        let mut tris = Vec::new();
+        for i in 0..n {
+            let v = (i * vertex_count / n) as u32;
+            let local = [
+                v,
+                (v + 1) % vertex_count as u32,
+                (v + 2) % vertex_count as u32,
+            ];
+            tris.push(if i < n / 3 {
+                local
+            } else if i < 2 * n / 3 {
+                [random(), random(), random()]
+            } else {
+                local.map(|x| vertex_count as u32 - 1 - x)
+            });
+        }
+        tris.retain(|t| t[0] != t[1] && t[1] != t[2] && t[0] != t[2]);
+        let mut direct = vec![Vec::new(); vertex_count];
+        for t in &tris {
+            for k in 0..3 {
+                direct[t[k] as usize].push([t[(k + 1) % 3], t[(k + 2) % 3]]);
+            }
+        }
+        for threads in [1, 2, 3] {
+            let pool = rayon::ThreadPoolBuilder::new()
+                .num_threads(threads)
+                .build()
+                .unwrap();
+            let stars = pool.install(|| Stars::build(&tris, vertex_count));
+            for (v, star) in direct.iter().enumerate() {
+                assert_eq!(
+                    stars.of(v),
+                    star.as_slice(),
+                    "vertex {v}, {threads} threads"
+                );
+            }
+        }
+    }
 
     #[test]
     fn each_triangle_is_filed_under_its_three_vertices_in_triangle_order() {
