@@ -71,9 +71,11 @@ impl Stars {
             .par_iter_mut()
             .zip(&ranges)
             .map(|(piece, range)| {
-                for &v in chunks_for(range).flat_map(<[[u32; 3]]>::as_flattened) {
-                    if range.contains(&(v as usize)) {
-                        piece[v as usize - range.start] += 1;
+                for chunk in chunks_for(range) {
+                    for &v in chunk.as_flattened() {
+                        if range.contains(&(v as usize)) {
+                            piece[v as usize - range.start] += 1;
+                        }
                     }
                 }
                 let mut end = 0;
@@ -105,13 +107,15 @@ impl Stars {
             .zip(ranges.par_iter().zip(&bases))
             .for_each(|((links, ends), (range, &base))| {
                 let chunks: Vec<&[[u32; 3]]> = chunks_for(range).collect();
-                for tri in chunks.iter().rev().flat_map(|c| c.iter().rev()) {
-                    for k in 0..3 {
-                        let v = tri[k] as usize;
-                        if range.contains(&v) {
-                            let end = &mut ends[v - range.start];
-                            *end -= 1;
-                            links[*end - base] = [tri[(k + 1) % 3], tri[(k + 2) % 3]];
+                for chunk in chunks.iter().rev() {
+                    for tri in chunk.iter().rev() {
+                        for k in 0..3 {
+                            let v = tri[k] as usize;
+                            if range.contains(&v) {
+                                let end = &mut ends[v - range.start];
+                                *end -= 1;
+                                links[*end - base] = [tri[(k + 1) % 3], tri[(k + 2) % 3]];
+                            }
                         }
                     }
                 }
