@@ -257,16 +257,19 @@ fn ring_cells(
         cs[k] = c;
         rs[k] = r;
     }
+    // Each cell's patches, looked up once (the table is two dependent loads).
+    let pt = [0, 1, 2, 3].map(|k| table.get(rs[k].config));
+    let patch = |k: usize| pt[k].patch_of_edge[edge_in_cell[k] as usize];
     let vertex = |k: usize| {
         let r = &rs[k];
-        let p = table.get(r.config).patch_of_edge[edge_in_cell[k] as usize];
+        let p = patch(k);
         debug_assert_ne!(p, NO_PATCH);
         r.first + p as u32
     };
     let position = |k: usize| {
         let r = &rs[k];
         let o = &cells.blocks[r.block];
-        let p = table.get(r.config).patch_of_edge[edge_in_cell[k] as usize];
+        let p = patch(k);
         o.vertices[(o.first[r.local] + p as u32) as usize]
     };
     let frame = EdgeFrame {
@@ -279,7 +282,7 @@ fn ring_cells(
         let o = [0, 1, 2].map(|a| s[a] - c[a]);
         rs[k].config >> (o[0] | o[1] << 1 | o[2] << 2) & 1 == 1
     };
-    let several = |r: &CellRef| table.get(r.config).edges.len() > 1;
+    let several = |k: usize| pt[k].edges.len() > 1;
     // At most four cell vertices and four face vertices; a vector only for fans.
     let mut corners = [Corner::Vertex(0); 8];
     let mut count = 0;
@@ -309,10 +312,10 @@ fn ring_cells(
         let bit_lo = 1 << (2 * fa);
         // Both cells decide the shared face alike (same four samples); the lower cell's word
         // is the one every user of the face reads.
-        let joined = table.get(lower.config).joined & bit_hi != 0;
+        let (lower_pt, upper_pt) = (pt[lower_k], pt[upper_k]);
+        let joined = lower_pt.joined & bit_hi != 0;
         debug_assert!(
-            table.get(lower.config).ambiguous & bit_hi == 0
-                || joined == (table.get(upper.config).joined & bit_lo != 0)
+            lower_pt.ambiguous & bit_hi == 0 || joined == (upper_pt.joined & bit_lo != 0)
         );
         let kind = FaceKind::of(
             e.lower_inside,
@@ -336,13 +339,11 @@ fn ring_cells(
             axis: fa as u8,
             segment,
         });
-        if table.get(lower.config).split_face & bit_hi != 0
-            && table.get(upper.config).split_face & bit_lo != 0
-        {
+        if lower_pt.split_face & bit_hi != 0 && upper_pt.split_face & bit_lo != 0 {
             fan = true;
             corners[count] = key;
             count += 1;
-        } else if ambiguous || several(lower) || several(upper) {
+        } else if ambiguous || several(lower_k) || several(upper_k) {
             let face = DualFace::new(
                 (lower.config, lower_cell),
                 upper.config,
