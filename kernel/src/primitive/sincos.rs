@@ -33,25 +33,35 @@ pub fn sincos_f64(x: f64) -> (f64, f64) {
     let q = j.to_bits();
     let r = ((x - k * PIO2_1) - k * PIO2_2) - k * PIO2_3;
     let r2 = r * r;
-    // Taylor coefficients 1/n! with alternating signs, evaluated by Horner in r².
-    let s = 2.811_457_254_345_520_6e-15;
-    let s = s * r2 - 7.647_163_731_819_816e-13;
-    let s = s * r2 + 1.605_904_383_682_161_3e-10;
-    let s = s * r2 - 2.505_210_838_544_172e-8;
-    let s = s * r2 + 2.755_731_922_398_589_3e-6;
-    let s = s * r2 - 1.984_126_984_126_984e-4;
-    let s = s * r2 + 8.333_333_333_333_333e-3;
-    let s = s * r2 - 1.666_666_666_666_666_6e-1;
+    // Taylor coefficients 1/n! with alternating signs, highest power first, in r².
+    let s = horner(
+        r2,
+        &[
+            2.811_457_254_345_520_6e-15,
+            -7.647_163_731_819_816e-13,
+            1.605_904_383_682_161_3e-10,
+            -2.505_210_838_544_172e-8,
+            2.755_731_922_398_589_3e-6,
+            -1.984_126_984_126_984e-4,
+            8.333_333_333_333_333e-3,
+            -1.666_666_666_666_666_6e-1,
+        ],
+    );
     // A zero remainder is returned as it is, keeping the sign of −0 as the library does.
     let sin = if r == 0.0 { r } else { r + r * r2 * s };
-    let c = -1.561_920_696_858_622_5e-16;
-    let c = c * r2 + 4.779_477_332_387_385e-14;
-    let c = c * r2 - 1.147_074_559_772_972_5e-11;
-    let c = c * r2 + 2.087_675_698_786_81e-9;
-    let c = c * r2 - 2.755_731_922_398_589e-7;
-    let c = c * r2 + 2.480_158_730_158_73e-5;
-    let c = c * r2 - 1.388_888_888_888_889e-3;
-    let c = c * r2 + 4.166_666_666_666_666_4e-2;
+    let c = horner(
+        r2,
+        &[
+            -1.561_920_696_858_622_5e-16,
+            4.779_477_332_387_385e-14,
+            -1.147_074_559_772_972_5e-11,
+            2.087_675_698_786_81e-9,
+            -2.755_731_922_398_589e-7,
+            2.480_158_730_158_73e-5,
+            -1.388_888_888_888_889e-3,
+            4.166_666_666_666_666_4e-2,
+        ],
+    );
     let half = 0.5 * r2;
     // 1 − r²/2 + r⁴·c, with the large step last and exact where it can be.
     let cos = 1.0 - (half - r2 * r2 * c);
@@ -64,6 +74,12 @@ pub fn sincos_f64(x: f64) -> (f64, f64) {
         -cos
     };
     (sin, cos)
+}
+
+/// The polynomial with coefficients `c` (highest power first) at `x`, by Horner's rule.
+#[inline(always)]
+fn horner(x: f64, c: &[f64]) -> f64 {
+    c.iter().fold(0.0, |acc, &k| acc * x + k)
 }
 
 #[cfg(test)]
