@@ -24,7 +24,7 @@ const HEADER_LEN: usize = 80;
 /// Size of the header plus the `u32` triangle count.
 const PREAMBLE_LEN: u64 = 84;
 /// Size of one binary triangle record: normal, three corners, attribute.
-const RECORD_LEN: u64 = 50;
+pub(super) const RECORD_LEN: u64 = 50;
 
 /// Reads binary or ASCII STL.
 pub(super) fn read(bytes: &[u8], name: &str) -> Result<IndexedMesh, MeshIoError> {

@@ -20,6 +20,7 @@ use std::collections::HashMap;
 use std::sync::atomic::{AtomicU64, Ordering};
 
 use super::key_hash::{KeyHash, fold};
+use super::stl::RECORD_LEN;
 
 /// Number of shards.
 const SHARDS: usize = 256;
@@ -27,8 +28,8 @@ const SHARDS: usize = 256;
 /// Records per chunk (a chunk's bytes and entries stay in the cache between its passes).
 const CHUNK: usize = 1 << 12;
 
-/// Size of a binary STL record: normal, three corners, attribute.
-const RECORD: usize = 50;
+/// Size of a binary STL record (the reader's [`RECORD_LEN`]).
+const RECORD: usize = RECORD_LEN as usize;
 
 /// Multipliers of the shard hash (different from the maps' own, so a shard's keys still spread
 /// over its map).
