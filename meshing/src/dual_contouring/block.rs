@@ -142,6 +142,10 @@ pub(crate) fn build<F: Evaluator>(
     let (nx, nxy) = (n[0], n[0] * n[1]);
     s.ins.clear();
     s.ins.extend(values.iter().map(|&v| u8::from(inside(v))));
+    let samples = s.ins.len();
+    // Padding, so that the edge scan reads every sample's three forward neighbours without
+    // bounds branches (the reads past an edge of the block are masked out).
+    s.ins.resize(samples + nxy + nx + 1, 0);
     let ins = &s.ins;
     let point = |l: [usize; 3]| spec.point(min[0] + l[0], min[1] + l[1], min[2] + l[2]);
     // Every sign-changing edge between the block's samples.
@@ -152,16 +156,23 @@ pub(crate) fn build<F: Evaluator>(
     s.groups.clear();
     for k in 0..n[2] {
         for j in 0..n[1] {
+            let (has_y, has_z) = (u8::from(j + 1 < n[1]), u8::from(k + 1 < n[2]));
             for i in 0..n[0] {
                 let idx = i + nx * j + nxy * k;
                 let here = ins[idx];
-                let ends = [(i + 1 < n[0], 1), (j + 1 < n[1], nx), (k + 1 < n[2], nxy)];
-                for (axis, &(exists, step)) in ends.iter().enumerate() {
-                    if !exists || ins[idx + step] == here {
+                // Bit `axis` set where the edge along it exists and changes sign: one branch
+                // for the common sample without crossings.
+                let changes = (ins[idx + 1] ^ here) & u8::from(i + 1 < n[0])
+                    | ((ins[idx + nx] ^ here) & has_y) << 1
+                    | ((ins[idx + nxy] ^ here) & has_z) << 2;
+                if changes == 0 {
+                    continue;
+                }
+                for (axis, step) in [1, nx, nxy].into_iter().enumerate() {
+                    if changes >> axis & 1 == 0 {
                         continue;
                     }
-                    let mut o = [i, j, k];
-                    o[axis] += 1;
+                    let o = [0, 1, 2].map(|a| [i, j, k][a] + usize::from(a == axis));
                     s.ids[3 * idx + axis] = s.queries.len() as u32;
                     s.keys.push((3 * idx + axis) as u32);
                     let cell = |c: usize, m: usize| (c.min(m.saturating_sub(1)) / 2) as u32;
@@ -224,12 +235,25 @@ pub(crate) fn build<F: Evaluator>(
     let mut face_keys: Vec<u16> = Vec::new();
     for k in 0..e[2] {
         for j in 0..e[1] {
+            // The corner mask slides along x: a cell's low-x corners (bits 0, 2, 4, 6) are the
+            // previous cell's high-x ones (bits 1, 3, 5, 7).
+            let mut mask = 0u8;
             for i in 0..e[0] {
                 let base = i + nx * j + nxy * k;
-                let mut mask = 0u8;
-                for (c, off) in corner.iter().enumerate() {
-                    mask |= ins[base + off] << c;
-                }
+                let high = base + 1;
+                let high_x = ins[high] << 1
+                    | ins[high + nx] << 3
+                    | ins[high + nxy] << 5
+                    | ins[high + nxy + nx] << 7;
+                mask = if i == 0 {
+                    let low_x = ins[base]
+                        | ins[base + nx] << 2
+                        | ins[base + nxy] << 4
+                        | ins[base + nxy + nx] << 6;
+                    low_x | high_x
+                } else {
+                    (mask >> 1) & 0x55 | high_x
+                };
                 let ci = i + e[0] * (j + e[1] * k);
                 if mask == 0 || mask == 255 {
                     b.configs[ci] = Config::from(mask);
@@ -344,7 +368,7 @@ pub(crate) fn build<F: Evaluator>(
         });
     }
     if keep {
-        b.inside = ins.clone();
+        b.inside = ins[..samples].to_vec();
     }
     b
 }
