@@ -61,6 +61,7 @@ pub mod subdivision;
 #[cfg(feature = "suites")]
 pub mod suites;
 pub mod topology;
+mod used;
 
 pub use halfedge::HalfEdgeMesh;
 pub use sink::{MeshSink, VertexIds};

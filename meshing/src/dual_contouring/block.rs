@@ -233,6 +233,10 @@ pub(crate) fn build<F: Evaluator>(
         choices: field.has_choices(),
     };
     let mut face_keys: Vec<u16> = Vec::new();
+    // At most one owned edge per crossing edge, and on a surface about one vertex per crossing
+    // edge: one allocation each (trimmed at the end), where pushes regrew and copied them.
+    b.vertices.reserve_exact(s.keys.len());
+    b.edges.reserve_exact(s.keys.len());
     for k in 0..e[2] {
         for j in 0..e[1] {
             // The corner mask slides along x: a cell's low-x corners (bits 0, 2, 4, 6) are the
@@ -370,6 +374,8 @@ pub(crate) fn build<F: Evaluator>(
     if keep {
         b.inside = ins[..samples].to_vec();
     }
+    b.vertices.shrink_to_fit();
+    b.edges.shrink_to_fit();
     b
 }
 

@@ -58,7 +58,6 @@ use rayon::prelude::*;
 use solidkit_kernel::Evaluator;
 #[cfg(doc)]
 use solidkit_kernel::Program;
-use std::sync::atomic::{AtomicBool, Ordering};
 
 /// Options of dual contouring.
 #[derive(Debug, Clone, Default)]
@@ -162,14 +161,7 @@ pub fn mesh_dc_samples<F: Evaluator>(
 fn write(positions: &[DVec3], triangles: &[[u32; 3]], sink: &mut impl MeshSink) {
     /// Vertices or triangles per parallel block.
     const BLOCK: usize = 1 << 16;
-    let used: Vec<AtomicBool> = positions.iter().map(|_| AtomicBool::new(false)).collect();
-    // In blocks: a flattened parallel iterator splits down to single triangles.
-    triangles.par_chunks(BLOCK).for_each(|c| {
-        for &v in c.as_flattened() {
-            used[v as usize].store(true, Ordering::Relaxed);
-        }
-    });
-    let used: Vec<bool> = used.into_iter().map(AtomicBool::into_inner).collect();
+    let used = crate::used::used_vertices(positions.len(), triangles);
     // Each used vertex's rank among the used ones, block by block in parallel.
     let counts: Vec<usize> = used
         .par_chunks(BLOCK)
