@@ -96,6 +96,11 @@ pub(crate) struct BrickScratch<E: Evaluator> {
     /// Scratch of the pinch check.
     pinch: PinchScratch<E::IntervalScratch>,
     evaluation_s: f64,
+    /// A brick's crossing edges, triangles and centres are gathered here and copied out at
+    /// their exact size: one allocation each per brick instead of a doubling series.
+    edges: Vec<(u16, Vec3)>,
+    triangles: Vec<[u16; 3]>,
+    centres: Vec<Vec3>,
 }
 
 impl<E: Evaluator> BrickScratch<E> {
@@ -107,6 +112,9 @@ impl<E: Evaluator> BrickScratch<E> {
             batch: Default::default(),
             pinch: Default::default(),
             evaluation_s: 0.0,
+            edges: Vec::new(),
+            triangles: Vec::new(),
+            centres: Vec::new(),
         }
     }
 }
@@ -310,6 +318,8 @@ pub(crate) fn process<E: Evaluator>(
         spec.point(node.min[0] + i, node.min[1] + j, node.min[2] + k)
     };
     let mut certified = true;
+    let mut found = std::mem::take(&mut s.edges);
+    found.clear();
     out.edge_rows.reserve(owned[2] * owned[1] + 1);
     out.edge_rows.push(0);
     for k in 0..owned[2] {
@@ -337,13 +347,14 @@ pub(crate) fn process<E: Evaluator>(
                     let (lo, hi) = (point(i, j, k)[axis], q[axis]);
                     let top = point(i + o[0], j + o[1], k + o[2])[axis];
                     certified &= disjoint::strictly_inside(lo, hi, top);
-                    out.edges.push(((i << 2 | axis) as u16, q.as_vec3()));
+                    found.push(((i << 2 | axis) as u16, q.as_vec3()));
                 }
             }
-            out.edge_rows.push(out.edges.len() as u32);
+            out.edge_rows.push(found.len() as u32);
         }
     }
-    out.edges.shrink_to_fit();
+    out.edges = found.to_vec();
+    s.edges = found;
     let edges = out;
     let mut out = BrickTriangles::default();
     let table = case_table();
@@ -368,6 +379,12 @@ pub(crate) fn process<E: Evaluator>(
         )
         .expect("a cell's triangles use crossing edges only")
     };
+    let (mut triangles, mut centres) = (
+        std::mem::take(&mut s.triangles),
+        std::mem::take(&mut s.centres),
+    );
+    triangles.clear();
+    centres.clear();
     out.triangle_rows.reserve(e[2] * e[1] + 1);
     out.triangle_rows.push(0);
     out.centre_rows.push(0);
@@ -393,7 +410,7 @@ pub(crate) fn process<E: Evaluator>(
                 if centre != NO_CENTRE {
                     let l = &table.loops(config)[centre as usize];
                     let c = loop_centre(l.iter().map(|&edge| crossing(i, j, k, edge)));
-                    out.centres.push(c.as_vec3());
+                    centres.push(c.as_vec3());
                     centre_at = c;
                 }
                 let tris = table.triangles(config);
@@ -403,20 +420,22 @@ pub(crate) fn process<E: Evaluator>(
                         disjoint::cell_disjoint(tris, centre_at, |edge| crossing(i, j, k, edge));
                 }
                 for tri in tris {
-                    out.triangles.push(tri.map(|edge| {
+                    triangles.push(tri.map(|edge| {
                         if edge == CENTRE {
-                            return CENTRE_IDS + (out.centres.len() - 1) as u16;
+                            return CENTRE_IDS + (centres.len() - 1) as u16;
                         }
                         let (axis, o) = edge_origin(edge);
                         local_edge(i + o[0], j + o[1], k + o[2], axis)
                     }));
                 }
             }
-            out.triangle_rows.push(out.triangles.len() as u32);
-            out.centre_rows.push(out.centres.len() as u32);
+            out.triangle_rows.push(triangles.len() as u32);
+            out.centre_rows.push(centres.len() as u32);
         }
     }
-    out.triangles.shrink_to_fit();
+    out.triangles = triangles.to_vec();
+    out.centres = centres.to_vec();
+    (s.triangles, s.centres) = (triangles, centres);
     if out.centres.is_empty() {
         // The common case: no row table kept (an empty table means no centre in any row).
         out.centre_rows = Vec::new();
