@@ -83,7 +83,7 @@ pub(crate) fn assemble<P: Probe>(
             scratch.rings.clear();
             scratch.requests.clear();
             for e in &b.edges {
-                let (r, fold) = ring(bi, e, &cells, spec);
+                let (r, fold) = ring(bi, e, &cells, spec).unwrap_or((Around::Open, None));
                 if let Some(fold) = fold {
                     scratch.requests.extend(fold);
                 }
@@ -205,13 +205,9 @@ enum Around {
     Open,
 }
 
-/// The ring around owned edge `e` (of block `bi`), with the fold of a folded quad.
-fn ring(bi: usize, e: &OwnedEdge, cells: &Cells, spec: &GridSpec) -> (Around, Option<Fold>) {
-    ring_cells(bi, e, cells, spec).unwrap_or((Around::Open, None))
-}
-
-/// [`ring`], `None` for [`Around::Open`].
-fn ring_cells(
+/// The ring around owned edge `e` (of block `bi`), with the fold of a folded quad; `None` where
+/// a cell around the edge lies outside the grid ([`Around::Open`]).
+fn ring(
     bi: usize,
     e: &OwnedEdge,
     cells: &Cells,

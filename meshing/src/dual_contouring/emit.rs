@@ -19,32 +19,33 @@ pub(crate) fn triangles(
     let m = |v: u32| map.map_or(v, |m| m[v as usize]);
     let mut out = Vec::new();
     let mut ring: Vec<u32> = Vec::with_capacity(8);
-    if map.is_none() {
-        // Every quad as it stands: two triangles each, the blocks written in parallel.
-        let lens: Vec<usize> = c.quads.iter().map(|q| 2 * q.len()).collect();
-        extend_in_blocks(&mut out, [0; 3], &lens, &|i, out| {
-            for (pair, q) in out.chunks_exact_mut(2).zip(&c.quads[i]) {
-                pair.copy_from_slice(&split_quad(q, &[], true));
-            }
-        });
-    }
-    let mapped: &[Vec<Quad>] = if map.is_some() { &c.quads } else { &[] };
-    for quads in mapped {
-        for q in quads {
-            ring.clear();
-            ring.extend(q.v.iter().map(|&v| m(v)));
-            merge_repeats(&mut ring);
-            match ring.len() {
-                3 => out.push([ring[0], ring[1], ring[2]]),
-                4 => out.extend(split_quad(
-                    &Quad {
-                        v: [ring[0], ring[1], ring[2], ring[3]],
-                        ..*q
-                    },
-                    positions,
-                    ring[..] == q.v[..],
-                )),
-                _ => {}
+    match map {
+        None => {
+            // Every quad as it stands: two triangles each, the blocks written in parallel.
+            let lens: Vec<usize> = c.quads.iter().map(|q| 2 * q.len()).collect();
+            extend_in_blocks(&mut out, [0; 3], &lens, &|i, out| {
+                for (pair, q) in out.chunks_exact_mut(2).zip(&c.quads[i]) {
+                    pair.copy_from_slice(&split_quad(q, &[], true));
+                }
+            });
+        }
+        Some(_) => {
+            for q in c.quads.iter().flatten() {
+                ring.clear();
+                ring.extend(q.v.iter().map(|&v| m(v)));
+                merge_repeats(&mut ring);
+                match ring.len() {
+                    3 => out.push([ring[0], ring[1], ring[2]]),
+                    4 => out.extend(split_quad(
+                        &Quad {
+                            v: [ring[0], ring[1], ring[2], ring[3]],
+                            ..*q
+                        },
+                        positions,
+                        ring[..] == q.v[..],
+                    )),
+                    _ => {}
+                }
             }
         }
     }
