@@ -323,9 +323,16 @@ fn a_full_standard_output_is_an_error_not_a_panic() {
         assert_refused(&o, &["standard output", "No space left"]);
         assert_eq!(stderr(&o).lines().count(), 1, "{}", stderr(&o));
         if !json {
-            // The text report goes out first: the file is not written.
+            // The text report goes out first: the file, staged while the report ran, is not
+            // renamed into place, and its temporary is gone.
             assert!(!out.exists(), "the output was written");
         }
+        let leftovers: Vec<_> = std::fs::read_dir(dir.path())
+            .unwrap()
+            .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
+            .filter(|name| name.ends_with(".tmp"))
+            .collect();
+        assert!(leftovers.is_empty(), "temporary files left: {leftovers:?}");
     }
     for args in [
         vec!["check", path_str(&out)],

@@ -1,5 +1,6 @@
 //! `solidkit mesh`: tree → field → marching cubes → report (and mesh file).
 
+use super::overlap::{self, Overlapped, report_while_syncing};
 use crate::args::{MeshArgs, MeshMethod};
 use crate::output::{out, outln};
 use crate::progress::MeshProgress;
@@ -11,7 +12,7 @@ use solidkit_kernel::Aabb;
 use solidkit_meshing::ReportOptions;
 use solidkit_meshing::io::{
     MeshFormat, WriteOptions, is_single_precision, single_precision_collisions,
-    write_colored_mesh_with,
+    stage_colored_mesh_with,
 };
 use solidkit_meshing::pipeline::{Domain, MeshOptions, PipelineError, Prepared, warnings};
 use solidkit_meshing::refine::RefineOptions;
@@ -92,20 +93,6 @@ pub fn run(a: &MeshArgs) -> Result<u8> {
         warnings.push(format!("{input}: {w}"));
     }
     let time_s = start.elapsed().as_secs_f64();
-    let report_start = Instant::now();
-    let r = meshed.report(&ReportOptions {
-        self_intersections: !a.no_self_intersections,
-    });
-    let report_s = report_start.elapsed().as_secs_f64();
-    let found = warnings::empty(&r).or_else(|| warnings::not_closed_manifold(&r));
-    for w in found
-        .into_iter()
-        .chain(warnings::fragments(&r, meshed.spec.cell))
-    {
-        let w = format!("{input}: {w}");
-        crate::output::errln!("warning: {}", crate::escape::one_line(&w));
-        warnings.push(w);
-    }
     let (mesh, stats, fine) = (&meshed.mesh, &meshed.stats, &meshed.spec);
     // Colours only when the tree has `color` nodes and the output file can hold them (no cost
     // otherwise: STL, OBJ and OFF files and runs without a file write none).
@@ -118,18 +105,44 @@ pub fn run(a: &MeshArgs) -> Result<u8> {
     } else {
         meshed.face_colors(&solid)
     };
-    if let Some(w) = single_precision_warning(a, mesh) {
+    let precision = single_precision_warning(a, mesh);
+    let staged = a
+        .output
+        .as_deref()
+        .map(|out| stage_colored_mesh_with(out, mesh, colors.as_ref(), &WriteOptions::default()));
+    let Overlapped {
+        report: r,
+        report_s,
+        synced,
+    } = report_while_syncing(
+        || {
+            meshed.report(&ReportOptions {
+                self_intersections: !a.no_self_intersections,
+            })
+        },
+        staged.as_ref().and_then(|s| s.as_ref().ok()),
+    );
+    let found = warnings::empty(&r).or_else(|| warnings::not_closed_manifold(&r));
+    for w in found
+        .into_iter()
+        .chain(warnings::fragments(&r, meshed.spec.cell))
+    {
+        let w = format!("{input}: {w}");
         crate::output::errln!("warning: {}", crate::escape::one_line(&w));
         warnings.push(w);
     }
-    let write = |out: &std::path::Path| {
-        write_colored_mesh_with(out, mesh, colors.as_ref(), &WriteOptions::default())
-    };
-    // The text report goes out before the file is written, so a closed or full standard output
-    // (exit 2) leaves an existing output file untouched; JSON only follows a written file.
+    if let Some(w) = precision {
+        crate::output::errln!("warning: {}", crate::escape::one_line(&w));
+        warnings.push(w);
+    }
+    // The file is complete under a temporary name; it takes its place once the report is out.
+    let write = |staged| -> Result<()> { Ok(overlap::commit(staged, synced)?) };
+    // The text report goes out before the file is renamed into place, so a closed or full
+    // standard output (exit 2) leaves an existing output file untouched; JSON only follows a
+    // written file.
     if a.json {
-        if let Some(out) = &a.output {
-            write(out)?;
+        if let Some(staged) = staged {
+            write(staged)?;
         }
         let extra = [
             ("time_s", json!(time_s)),
@@ -169,8 +182,8 @@ pub fn run(a: &MeshArgs) -> Result<u8> {
         )?;
         outln!("time: {time_s:.3} s")?;
         outln!("report time: {report_s:.3} s")?;
-        if let Some(out) = &a.output {
-            write(out)?;
+        if let (Some(out), Some(staged)) = (&a.output, staged) {
+            write(staged)?;
             match &colors {
                 Some(c) => outln!("wrote: {} ({} colours)", out.display(), c.used())?,
                 None => outln!("wrote: {}", out.display())?,

@@ -10,6 +10,7 @@ mod gallery;
 mod r#gen;
 mod mesh;
 mod mesh_polyhedral;
+mod overlap;
 mod render;
 mod repair;
 mod subdivide;

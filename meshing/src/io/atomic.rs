@@ -14,7 +14,7 @@
 use std::fs::{File, OpenOptions};
 use std::io::{self, BufWriter, Write};
 use std::path::{Path, PathBuf};
-use std::sync::atomic::{AtomicU64, Ordering};
+use std::sync::atomic::{AtomicBool, AtomicU64, Ordering};
 use std::sync::{Mutex, MutexGuard};
 use std::time::{SystemTime, UNIX_EPOCH};
 
@@ -62,29 +62,95 @@ pub fn write_atomic(
     path: &Path,
     write: impl FnOnce(&mut dyn Write) -> io::Result<()>,
 ) -> Result<(), MeshIoError> {
-    write_then_rename(path, write).map_err(|source| MeshIoError::Io {
-        path: path.to_path_buf(),
-        source,
-    })
+    stage_atomic(path, write)?.commit()
 }
 
-fn write_then_rename(
+/// The first half of [`write_atomic`]: the content written and flushed to its temporary file,
+/// which [`StagedFile::commit`] then syncs and renames over `path`. Dropping the [`StagedFile`]
+/// instead removes the temporary file and leaves `path` as it was.
+///
+/// Between the two a caller may work on something else while the disk catches up
+/// ([`StagedFile::sync`] from another thread: `solidkit mesh` computes its report meanwhile) and
+/// still decide afterwards whether the file appears at all.
+pub fn stage_atomic(
     path: &Path,
     write: impl FnOnce(&mut dyn Write) -> io::Result<()>,
-) -> io::Result<()> {
-    let (file, temp) = create_temp_beside(path)?;
-    let mut out = BufWriter::new(file);
-    write(&mut out)?;
-    let file = out.into_inner().map_err(io::IntoInnerError::into_error)?;
-    file.sync_all()?;
-    drop(file);
-    std::fs::rename(&temp.path, path)?;
-    temp.keep();
-    sync_parent_folder(path);
-    Ok(())
+) -> Result<StagedFile, MeshIoError> {
+    let stage = || {
+        let (file, temp) = create_temp_beside(path)?;
+        let mut out = BufWriter::new(file);
+        write(&mut out)?;
+        let file = out.into_inner().map_err(io::IntoInnerError::into_error)?;
+        Ok((file, temp))
+    };
+    stage()
+        .map(|(file, temp)| StagedFile {
+            file,
+            temp,
+            target: path.to_path_buf(),
+            synced: AtomicBool::new(false),
+        })
+        .map_err(|source| io_error(path, source))
+}
+
+/// A complete temporary file waiting to replace its target ([`stage_atomic`]); removed when
+/// dropped uncommitted.
+#[derive(Debug)]
+pub struct StagedFile {
+    file: File,
+    temp: TempFile,
+    target: PathBuf,
+    /// Set by a successful [`StagedFile::sync`].
+    synced: AtomicBool,
+}
+
+impl StagedFile {
+    /// Waits until the content is on disk (`fsync`). Takes `&self`, so another thread may wait
+    /// while this one goes on; [`Self::commit`] does it when nobody has.
+    pub fn sync(&self) -> Result<(), MeshIoError> {
+        self.file
+            .sync_all()
+            .map_err(|source| io_error(&self.target, source))?;
+        self.synced.store(true, Ordering::Release);
+        Ok(())
+    }
+
+    /// Syncs the file unless [`Self::sync`] already did, renames it over its target and syncs
+    /// the folder entry (best effort).
+    pub fn commit(self) -> Result<(), MeshIoError> {
+        if !self.synced.load(Ordering::Acquire) {
+            self.sync()?;
+        }
+        let Self {
+            file, temp, target, ..
+        } = self;
+        drop(file);
+        match std::fs::rename(&temp.path, &target) {
+            Ok(()) => {
+                temp.keep();
+                sync_parent_folder(&target);
+                Ok(())
+            }
+            Err(source) => Err(io_error(&target, source)),
+        }
+    }
+
+    /// The path the file will have once committed.
+    pub fn target(&self) -> &Path {
+        &self.target
+    }
+}
+
+/// An I/O error writing `path`.
+fn io_error(path: &Path, source: io::Error) -> MeshIoError {
+    MeshIoError::Io {
+        path: path.to_path_buf(),
+        source,
+    }
 }
 
 /// A temporary file that is deleted when dropped, unless [`TempFile::keep`] was called.
+#[derive(Debug)]
 struct TempFile {
     path: PathBuf,
     armed: bool,
@@ -293,6 +359,26 @@ mod tests {
         write_atomic(&target, |w| w.write_all(b"new")).expect("write");
         assert_eq!(std::fs::read(&target).expect("read"), b"new");
         assert_eq!(entries(dir.path()), ["r.off"]);
+    }
+
+    #[test]
+    fn a_staged_file_appears_only_when_committed() {
+        let dir = tempfile::tempdir().expect("temp dir");
+        let target = dir.path().join("s.stl");
+        std::fs::write(&target, b"old").expect("seed");
+        // Dropped uncommitted: the temporary goes, the target keeps its content.
+        let staged = stage_atomic(&target, |w| w.write_all(b"new")).expect("stage");
+        assert_eq!(staged.target(), target.as_path());
+        assert_eq!(entries(dir.path()).len(), 2, "{:?}", entries(dir.path()));
+        assert_eq!(std::fs::read(&target).expect("read"), b"old");
+        drop(staged);
+        assert_eq!(entries(dir.path()), ["s.stl"]);
+        assert_eq!(std::fs::read(&target).expect("read"), b"old");
+        // Committed: the content replaces the target, nothing else is left.
+        let staged = stage_atomic(&target, |w| w.write_all(b"new")).expect("stage");
+        staged.commit().expect("commit");
+        assert_eq!(std::fs::read(&target).expect("read"), b"new");
+        assert_eq!(entries(dir.path()), ["s.stl"]);
     }
 
     #[cfg(target_os = "linux")]

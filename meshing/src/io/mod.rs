@@ -68,7 +68,7 @@ use crate::IndexedMesh;
 use solidkit_kernel::files::{DEFAULT_MAX_FILE_BYTES, read_regular_file};
 
 use crate::colors::FaceColors;
-pub use atomic::{remove_temporary_files_and_exit, write_atomic};
+pub use atomic::{StagedFile, remove_temporary_files_and_exit, stage_atomic, write_atomic};
 pub use error::{Location, MeshIoError};
 pub use ply_scalars::write_ply_with_scalars;
 pub use polygon::{PolygonError, newell_normal, triangulate_polygon};
@@ -227,6 +227,18 @@ pub fn write_colored_mesh_with(
     colors: Option<&FaceColors>,
     opts: &WriteOptions,
 ) -> Result<(), MeshIoError> {
+    stage_colored_mesh_with(path, mesh, colors, opts)?.commit()
+}
+
+/// [`write_colored_mesh_with`] up to the disk sync and the rename ([`stage_atomic`]): the file is
+/// complete under a temporary name, and appears at `path` only when the returned [`StagedFile`]
+/// is committed (dropped, it is removed).
+pub fn stage_colored_mesh_with(
+    path: &Path,
+    mesh: &IndexedMesh,
+    colors: Option<&FaceColors>,
+    opts: &WriteOptions,
+) -> Result<StagedFile, MeshIoError> {
     let format = match opts.format {
         Some(format) => format,
         None => MeshFormat::from_path(path)?,
@@ -235,7 +247,7 @@ pub fn write_colored_mesh_with(
         path: path.to_path_buf(),
         message,
     })?;
-    write_atomic(path, |out| {
+    stage_atomic(path, |out| {
         encode_colored(out, mesh, colors, format, opts.encoding)
     })
 }
