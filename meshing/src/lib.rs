@@ -49,6 +49,7 @@ pub mod io;
 pub mod marching_cubes;
 pub mod measure;
 pub mod octree;
+mod pieces;
 pub mod pipeline;
 pub mod polyhedral;
 pub mod refine;

@@ -19,6 +19,7 @@ use rayon::prelude::*;
 
 use crate::IndexedMesh;
 use crate::intersect::is_usable;
+use crate::pieces::split_at;
 
 /// The usable triangles (see [`is_usable`]), borrowed when all are.
 pub(crate) fn usable_triangles(mesh: &IndexedMesh) -> Cow<'_, [[u32; 3]]> {
@@ -168,21 +169,6 @@ fn vertex_ranges(vertex_count: usize) -> Vec<std::ops::Range<usize>> {
     (0..pieces)
         .map(|i| vertex_count * i / pieces..vertex_count * (i + 1) / pieces)
         .collect()
-}
-
-/// `items` cut into consecutive mutable pieces, piece `i` from `firsts[i] - firsts[0]` to where
-/// the next starts (`firsts` ascending, every difference within `items`).
-pub(crate) fn split_at<'a, T>(items: &'a mut [T], firsts: &[usize]) -> Vec<&'a mut [T]> {
-    let mut pieces = Vec::with_capacity(firsts.len());
-    let mut rest = items;
-    let mut at = firsts.first().copied().unwrap_or(0);
-    for next in firsts.iter().skip(1).copied().chain([at + rest.len()]) {
-        let (piece, tail) = rest.split_at_mut(next - at);
-        pieces.push(piece);
-        rest = tail;
-        at = next;
-    }
-    pieces
 }
 
 #[cfg(test)]

@@ -14,7 +14,7 @@
 use glam::{BVec4A, Vec4};
 use rayon::prelude::*;
 
-use crate::stars::split_at;
+use crate::pieces::split_at;
 
 /// Boxes per leaf.
 pub(crate) const LEAF: usize = 4;

@@ -13,6 +13,7 @@ use super::brick::{
     BrickEdges, BrickTriangles, CENTRE_IDS, LOCAL_EDGE_IDS, local_edge, local_parts,
 };
 use crate::grid::GridSpec;
+use crate::pieces::split_at;
 use crate::sink::MeshSink;
 use rayon::prelude::*;
 use std::collections::HashMap;
@@ -140,20 +141,33 @@ pub(crate) fn assemble(
     let centre_starts = starts(&centre_counts, edge_vertices);
     layers.shift(&mut centre_bases, &centre_starts);
     let mut count = edge_vertices + centre_counts.iter().sum::<usize>() as u32;
-    // Triangle corners to vertex numbers, brick by brick in parallel, consuming the local lists.
+    // Triangle corners to vertex numbers, brick by brick in parallel, consuming the local lists,
+    // into one array where each brick's triangles are consecutive (one allocation: a list per
+    // brick grew the threads' heaps page by page, a system call each time).
     // A per-thread table maps the brick's own edge ids to numbers; neighbours are searched.
     // Corners on an edge no neighbour lists (see the module docs) are `ORPHAN | i`, the `i`-th
     // of the brick's orphan edge keys.
-    type Resolved = (Vec<[u32; 3]>, Vec<u32>, Vec<glam::Vec3>, Vec<u32>, Vec<u64>);
+    let firsts: Vec<usize> = triangles
+        .iter()
+        .scan(0, |next, t| {
+            let at = *next;
+            *next += t.triangles.len();
+            Some(at)
+        })
+        .collect();
+    let total = triangles.iter().map(|t| t.triangles.len()).sum();
+    let mut resolved_triangles = vec![[0u32; 3]; total];
+    type Resolved = (Vec<u32>, Vec<glam::Vec3>, Vec<u32>, Vec<u64>);
     let resolved: Vec<Resolved> = triangles
         .into_par_iter()
+        .zip(split_at(&mut resolved_triangles, &firsts))
         .enumerate()
         .map_init(
             || Numbers {
                 number: vec![UNKNOWN; LOCAL_EDGE_IDS],
                 written: Vec::new(),
             },
-            |own, (b, t)| {
+            |own, (b, (t, tris))| {
                 own.clear();
                 let o = &bricks[b];
                 own.fill(o, &bases[b], [0; 3], o.owned);
@@ -170,12 +184,11 @@ pub(crate) fn assemble(
                         own.fill(&bricks[n], &bases[n], bit.map(|x| x * brick), span);
                     }
                 }
-                let mut tris = Vec::with_capacity(t.triangles.len());
                 let mut orphans = Vec::new();
                 for (r, w) in t.triangle_rows.windows(2).enumerate() {
                     let span = w[0] as usize..w[1] as usize;
-                    tris.extend(t.triangles[span].iter().map(|tri| {
-                        tri.map(|id| {
+                    for (slot, tri) in tris[span.clone()].iter_mut().zip(&t.triangles[span]) {
+                        *slot = tri.map(|id| {
                             if id >= CENTRE_IDS {
                                 let first = centre_bases[b][r] - t.centre_rows[r];
                                 return first + u32::from(id - CENTRE_IDS);
@@ -189,18 +202,18 @@ pub(crate) fn assemble(
                                     orphans.push(key);
                                     ORPHAN | (orphans.len() - 1) as u32
                                 })
-                        })
-                    }));
+                        });
+                    }
                 }
-                (tris, t.triangle_rows, t.centres, t.centre_rows, orphans)
+                (t.triangle_rows, t.centres, t.centre_rows, orphans)
             },
         )
         .collect();
-    let mut orphan_keys: Vec<u64> = resolved.iter().flat_map(|r| r.4.iter().copied()).collect();
+    let mut orphan_keys: Vec<u64> = resolved.iter().flat_map(|r| r.3.iter().copied()).collect();
     orphan_keys.sort_unstable();
     orphan_keys.dedup();
     count += orphan_keys.len() as u32;
-    sink.reserve(count as usize, resolved.iter().map(|r| r.0.len()).sum());
+    sink.reserve(count as usize, total);
     // The vertices, layer by layer in parallel: edge vertices, centres, then orphans.
     let edge_ids = sink.add_vertex_blocks(&edge_counts, &|bk, out| {
         let mut at = 0;
@@ -226,7 +239,7 @@ pub(crate) fn assemble(
     let centre_ids = sink.add_vertex_blocks(&centre_counts, &|bk, out| {
         let mut at = 0;
         layers.cell_rows(bk, &rows, &extents, |b, r| {
-            let (_, _, centres, centre_rows, _) = &resolved[b];
+            let (_, centres, centre_rows, _) = &resolved[b];
             if !centre_rows.is_empty() {
                 let row = &centres[centre_rows[r] as usize..centre_rows[r + 1] as usize];
                 for (slot, p) in out[at..at + row.len()].iter_mut().zip(row) {
@@ -261,7 +274,7 @@ pub(crate) fn assemble(
         .map(|bk| {
             let mut n = 0;
             layers.cell_rows(bk, &rows, &extents, |b, r| {
-                let tri_rows = &resolved[b].1;
+                let tri_rows = &resolved[b].0;
                 n += (tri_rows[r + 1] - tri_rows[r]) as usize;
             });
             n
@@ -270,7 +283,8 @@ pub(crate) fn assemble(
     sink.add_triangle_blocks(&triangle_counts, &|bk, out| {
         let mut at = 0;
         layers.cell_rows(bk, &rows, &extents, |b, r| {
-            let (tris, tri_rows, _, _, orphans) = &resolved[b];
+            let (tri_rows, _, _, orphans) = &resolved[b];
+            let tris = &resolved_triangles[firsts[b]..];
             let row = &tris[tri_rows[r] as usize..tri_rows[r + 1] as usize];
             let out = &mut out[at..at + row.len()];
             at += row.len();
