@@ -504,3 +504,21 @@ fn coincident_triangles_stay_fast() {
     );
     succeeds(&["mesh", path_str(&tree), "--resolution", "128"]);
 }
+
+#[test]
+fn an_output_in_a_missing_folder_is_named_once_with_its_cause() {
+    let l = Layout::new();
+    let tree = l.tree("s.json", r#"{"type": "sphere", "radius": 1}"#);
+    let out = l.path("no-such-folder").join("x.stl");
+    for json in [false, true] {
+        let mut args = mesh_args(&tree);
+        args.extend(["-o", path_str(&out)]);
+        if json {
+            args.push("--json");
+        }
+        let line = fails(&args, &["no-such-folder", "x.stl", "No such file"]);
+        // The I/O error names its path and quotes the system's message; the cause chain does
+        // not repeat it.
+        assert_eq!(line.matches("No such file").count(), 1, "{line}");
+    }
+}

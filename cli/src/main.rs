@@ -76,7 +76,16 @@ fn clean_up_on_signals() {
     }
 }
 
-/// The error and its causes on one line, control characters escaped.
+/// The error and its causes on one line, control characters escaped. A cause the message
+/// already quotes (errors that show their source, as `MeshIoError::Io` does) is not repeated.
 fn one_line(e: &anyhow::Error) -> String {
-    escape::one_line(&format!("{e:#}"))
+    let mut text = e.to_string();
+    for cause in e.chain().skip(1) {
+        let cause = cause.to_string();
+        if !text.contains(&cause) {
+            text.push_str(": ");
+            text.push_str(&cause);
+        }
+    }
+    escape::one_line(&text)
 }
