@@ -62,6 +62,7 @@ pub mod subdivision;
 #[cfg(feature = "suites")]
 pub mod suites;
 pub mod topology;
+mod usable;
 mod used;
 
 pub use halfedge::HalfEdgeMesh;

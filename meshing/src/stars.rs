@@ -13,29 +13,9 @@
 //! and each star lists its triangles in ascending triangle order whatever the thread count (the
 //! result is deterministic).
 
-use std::borrow::Cow;
-
 use rayon::prelude::*;
 
-use crate::IndexedMesh;
-use crate::intersect::is_usable;
 use crate::pieces::split_at;
-
-/// The usable triangles (see [`is_usable`]), borrowed when all are.
-pub(crate) fn usable_triangles(mesh: &IndexedMesh) -> Cow<'_, [[u32; 3]]> {
-    let n = mesh.positions.len();
-    if mesh.triangles.par_iter().all(|t| is_usable(t, n)) {
-        Cow::Borrowed(&mesh.triangles)
-    } else {
-        Cow::Owned(
-            mesh.triangles
-                .iter()
-                .filter(|t| is_usable(t, n))
-                .copied()
-                .collect(),
-        )
-    }
-}
 
 /// The star of every vertex `0..vertex_count`.
 #[derive(Debug, Clone)]

@@ -59,7 +59,7 @@ pub fn finish(
         .or_else(|| warnings::not_closed_manifold(&r))
         .map(|w| format!("{input}: {w}"));
     found.extend(more);
-    found.extend(super::mesh::single_precision_warning(a, &mesh));
+    found.extend(super::mesh_extras::single_precision_warning(a, &mesh));
     // Each triangle takes the colour of the part its face comes from, traced through the tree's
     // Booleans as on the grid path; the faces lie on the parts' own faces, so the parts' boxes
     // need only a hair of margin.
@@ -99,7 +99,7 @@ pub fn finish(
         }
     }
     if let Some(path) = &a.preview {
-        super::mesh::write_preview(&mesh, path)?;
+        super::mesh_extras::write_preview(&mesh, path)?;
     }
     Ok(0)
 }

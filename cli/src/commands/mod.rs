@@ -9,6 +9,7 @@ mod curve;
 mod gallery;
 mod r#gen;
 mod mesh;
+mod mesh_extras;
 mod mesh_polyhedral;
 mod overlap;
 mod render;

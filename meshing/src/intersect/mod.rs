@@ -48,7 +48,8 @@ use rayon::prelude::*;
 
 use crate::IndexedMesh;
 use crate::measure::MeasureError;
-use crate::stars::{Stars, usable_triangles};
+use crate::stars::Stars;
+use crate::usable::{is_usable, usable_triangles};
 use copies::Copies;
 use corners::{Corners, Item};
 use fans::Embedded;
@@ -78,14 +79,6 @@ impl SelfIntersections {
         self.examples.truncate(limit);
         self
     }
-}
-
-/// True when the triangle's indices are inside a vertex array of `vertex_count` and distinct.
-///
-/// Only such triangles take part in adjacency and measures.
-pub(crate) fn is_usable(tri: &[u32; 3], vertex_count: usize) -> bool {
-    let [a, b, c] = *tri;
-    tri.iter().all(|&i| (i as usize) < vertex_count) && a != b && b != c && a != c
 }
 
 /// True when two mesh triangles (vertex indices `ti`, `tj`, distinct within each, and their

@@ -484,14 +484,6 @@ fn repeated_collinear_triangles_take_no_part() {
     assert_eq!(got.examples, want);
 }
 
-#[test]
-fn usable_requires_range_and_distinct_indices() {
-    assert!(is_usable(&[0, 1, 2], 3));
-    assert!(!is_usable(&[0, 1, 3], 3));
-    assert!(!is_usable(&[0, 1, 1], 3));
-    assert!(!is_usable(&[2, 1, 2], 3));
-}
-
 /// [`none_meet`] (projections once, boxes apart skipped) says what testing every pair with
 /// [`pair_meets`] says, on small sets of triangles over a shared vertex pool: some share
 /// vertices, some lie apart, some cross.

@@ -15,7 +15,7 @@ use rayon::prelude::*;
 use super::bytes::{ByteCursor, Endian};
 use super::text::{Tokens, parse_coordinate, parse_f64, show};
 use super::weld::Welder;
-use super::weld_parallel;
+use super::weld_parallel::{self, RECORD_LEN};
 use super::{Encoding, Location, MeshIoError};
 use crate::IndexedMesh;
 
@@ -23,8 +23,6 @@ use crate::IndexedMesh;
 const HEADER_LEN: usize = 80;
 /// Size of the header plus the `u32` triangle count.
 const PREAMBLE_LEN: u64 = 84;
-/// Size of one binary triangle record: normal, three corners, attribute.
-pub(super) const RECORD_LEN: u64 = 50;
 
 /// Reads binary or ASCII STL.
 pub(super) fn read(bytes: &[u8], name: &str) -> Result<IndexedMesh, MeshIoError> {

@@ -20,7 +20,6 @@ use std::collections::HashMap;
 use std::sync::atomic::{AtomicU64, Ordering};
 
 use super::key_hash::{KeyHash, fold};
-use super::stl::RECORD_LEN;
 
 /// Number of shards.
 const SHARDS: usize = 256;
@@ -28,7 +27,10 @@ const SHARDS: usize = 256;
 /// Records per chunk (a chunk's bytes and entries stay in the cache between its passes).
 const CHUNK: usize = 1 << 12;
 
-/// Size of a binary STL record (the reader's [`RECORD_LEN`]).
+/// Size of one binary STL triangle record: normal, three corners, attribute (the reader and
+/// the writer use it too).
+pub(super) const RECORD_LEN: u64 = 50;
+/// [`RECORD_LEN`] as an index step.
 const RECORD: usize = RECORD_LEN as usize;
 
 /// Multipliers of the shard hash (different from the maps' own, so a shard's keys still spread

@@ -14,7 +14,7 @@ use rayon::prelude::*;
 
 use super::rng::Rng;
 use crate::IndexedMesh;
-use crate::intersect::is_usable;
+use crate::usable::is_usable;
 
 /// Seed of the area samples' random stream.
 const SEED: u64 = 0x5EED_0F5A_3FAC_E5E5;

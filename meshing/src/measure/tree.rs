@@ -9,7 +9,7 @@ use solidkit_kernel::bvh::{BvhError, TriangleBvh};
 
 use super::MeasureError;
 use crate::IndexedMesh;
-use crate::intersect::is_usable;
+use crate::usable::is_usable;
 
 /// Most triangles per leaf.
 const LEAF_SIZE: u32 = 4;

@@ -347,7 +347,7 @@ fn closed_oriented_manifold(mesh: &IndexedMesh) -> bool {
     let n = mesh.positions.len();
     let mut edges: HashMap<(u32, u32), u32> = HashMap::with_capacity(mesh.triangles.len() * 3);
     for tri in &mesh.triangles {
-        if !crate::intersect::is_usable(tri, n) {
+        if !crate::usable::is_usable(tri, n) {
             return false;
         }
         for k in 0..3 {

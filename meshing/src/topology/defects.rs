@@ -9,7 +9,8 @@ use super::ReportOptions;
 use super::edges::{EdgeKind, EdgeTable};
 use super::vertices::fan_counts;
 use crate::IndexedMesh;
-use crate::intersect::{is_usable, self_intersections};
+use crate::intersect::self_intersections;
+use crate::usable::is_usable;
 
 /// The most self-intersecting pairs collected; beyond it [`DefectItems::truncated`] is set.
 pub const MAX_DEFECT_PAIRS: usize = 1 << 20;

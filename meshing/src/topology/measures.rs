@@ -8,7 +8,7 @@ use rayon::prelude::*;
 
 use super::MAX_EXAMPLES;
 use crate::IndexedMesh;
-use crate::intersect::is_usable;
+use crate::usable::is_usable;
 
 /// Triangles per parallel work item.
 const CHUNK: usize = 1 << 14;

@@ -56,7 +56,8 @@ pub(crate) use vertices::fan_counts;
 
 use crate::IndexedMesh;
 use crate::intersect::self_intersections_among;
-use crate::stars::{Stars, usable_triangles};
+use crate::stars::Stars;
+use crate::usable::usable_triangles;
 use measures::Measures;
 use shells::ShellTally;
 use survey::Survey;
