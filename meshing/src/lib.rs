@@ -64,6 +64,7 @@ pub mod suites;
 pub mod topology;
 mod usable;
 mod used;
+mod window_stars;
 
 pub use halfedge::HalfEdgeMesh;
 pub use sink::{MeshSink, VertexIds};

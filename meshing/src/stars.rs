@@ -5,7 +5,8 @@
 //! entering it. Everything the report asks of an edge `{v, x}` or of the fan around `v` can then be
 //! answered from `v`'s star alone (`topology/local.rs`), in parallel over vertices, and the
 //! self-intersection test certifies embedded fans from it (`intersect/fans.rs`); the report
-//! builds the stars once for both.
+//! builds the stars once for both (without the test it takes them a window of vertices at a time
+//! instead, `crate::window_stars`).
 //!
 //! Built by a counting sort into one array (eight bytes per corner, no hashing). The work is
 //! split into vertex ranges; each range scans the triangles that may use it (the chunks whose

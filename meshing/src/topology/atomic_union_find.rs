@@ -8,6 +8,7 @@
 //! halves paths with the same compare-and-swap; a failed swap only skips a shortcut. Iterative,
 //! no recursion; elements are `u32` (at most 2³² − 1 of them, the edge table's limit too).
 
+use rayon::prelude::*;
 use std::sync::atomic::{AtomicU32, Ordering};
 
 /// Disjoint sets over `0..len` with concurrent `union`.
@@ -24,8 +25,18 @@ impl AtomicUnionFind {
             "union-find supports at most 2^32 - 1 elements"
         );
         Self {
-            parent: (0..len as u32).map(AtomicU32::new).collect(),
+            // In parallel: on a fresh process, most of the cost is the pages' first touch.
+            parent: (0..len as u32)
+                .into_par_iter()
+                .with_min_len(1 << 14)
+                .map(AtomicU32::new)
+                .collect(),
         }
+    }
+
+    /// Number of elements.
+    pub(crate) fn len(&self) -> usize {
+        self.parent.len()
     }
 
     /// The root of `x`'s set (its smallest element once no union is running).

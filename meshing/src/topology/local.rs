@@ -81,6 +81,29 @@ impl Local {
     }
 }
 
+/// One vertex's share of `V − E + F`, whether it or an edge to a larger vertex is a defect,
+/// and whether some triangle uses it.
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub(crate) struct Share {
+    /// [`Local::chi`] (saturated to `i32`).
+    pub(crate) chi: i32,
+    /// [`Local::defective`].
+    pub(crate) defective: bool,
+    /// Some triangle uses the vertex.
+    pub(crate) used: bool,
+}
+
+impl Local {
+    /// The vertex's [`Share`].
+    pub(crate) fn share(&self) -> Share {
+        Share {
+            chi: i32::try_from(self.chi).unwrap_or(i32::MIN),
+            defective: self.defective(),
+            used: self.fans > 0,
+        }
+    }
+}
+
 /// Reusable space for the slow path.
 #[derive(Debug, Default)]
 pub(crate) struct Scratch {

@@ -4,7 +4,9 @@
 //!
 //! The report is computed directly from an [`IndexedMesh`], not through the half-edge mesh, so it
 //! works on any input, however broken. Every step is iterative and at worst O(n log n): the
-//! triangles are filed under their vertices (`crate::stars`, a counting sort); each vertex's star
+//! triangles are filed under their vertices (`crate::stars`, a counting sort, or a window of
+//! vertices at a time when no self-intersection test needs every star, `crate::window_stars`);
+//! each vertex's star
 //! gives the kinds of its edges to larger vertices, its fans and its share of the Euler
 //! characteristic (`local.rs`), in parallel over vertices (`survey.rs`); shells join the ends of
 //! every edge in a concurrent union-find whose roots are each set's smallest element
@@ -205,17 +207,27 @@ impl TopologyReport {
         intersection_free: bool,
     ) -> Self {
         let test = options.self_intersections && !intersection_free;
-        // The stars serve both the vertex pass and the self-intersection test.
         let triangles = usable_triangles(mesh);
-        let stars = Stars::build(&triangles, mesh.positions.len());
-        let intersections = || {
-            test.then(|| self_intersections_among(mesh, &stars, MAX_EXAMPLES).ok())
-                .flatten()
+        let vertex_count = mesh.positions.len();
+        // Without the test, the vertex pass takes its stars a window at a time; the test needs
+        // the whole mesh's stars, which then serve the vertex pass too (as they do for
+        // triangles in no spatial order).
+        let windowed = (!test)
+            .then(|| Survey::windowed(&triangles, vertex_count))
+            .flatten();
+        let (mut report, intersections) = match windowed {
+            Some(survey) => (Self::from_survey(mesh, &triangles, survey), None),
+            None => {
+                let stars = Stars::build(&triangles, vertex_count);
+                rayon::join(
+                    || Self::from_survey(mesh, &triangles, Survey::of(&triangles, &stars)),
+                    || {
+                        test.then(|| self_intersections_among(mesh, &stars, MAX_EXAMPLES).ok())
+                            .flatten()
+                    },
+                )
+            }
         };
-        let (mut report, intersections) = rayon::join(
-            || Self::without_options(mesh, &triangles, &stars),
-            intersections,
-        );
         if let Some(found) = intersections {
             report.self_intersections = Some(found.count);
             report.self_intersections_method = Some(SelfIntersectionsMethod::Tested);
@@ -227,14 +239,14 @@ impl TopologyReport {
         report
     }
 
-    /// The report without self-intersections, from the usable `tris` and their `stars`.
-    fn without_options(mesh: &IndexedMesh, tris: &[[u32; 3]], stars: &Stars) -> Self {
+    /// The report without self-intersections, from the usable `tris` and their `survey`.
+    fn from_survey(mesh: &IndexedMesh, tris: &[[u32; 3]], survey: Survey) -> Self {
         let vertex_count = mesh.positions.len();
-        let survey = Survey::of(tris, stars);
         let shells = &survey.shells;
+        let shares = &survey.shares;
         let (measures, tally) = rayon::join(
-            || Measures::of(mesh, |v| stars.is_referenced(v)),
-            || ShellTally::new(shells, &survey.shares, &mesh.positions),
+            || Measures::of(mesh, |v| shares[v].used),
+            || ShellTally::new(shells, shares, &mesh.positions),
         );
         let mut examples = survey.examples;
         examples.degenerate_faces = measures.degenerate_examples;

@@ -7,7 +7,7 @@
 //! closed, oriented manifold (χ = 2 − 2g).
 
 use super::atomic_union_find::AtomicUnionFind;
-use crate::stars::Stars;
+use super::local::Share;
 use std::collections::HashSet;
 
 use glam::DVec3;
@@ -31,19 +31,17 @@ pub(crate) struct Shells {
 }
 
 impl Shells {
-    /// Numbers the sets of `sets` (over the vertices of `stars`, every edge's ends joined) in
-    /// order of their smallest triangle in `triangles`.
-    pub(crate) fn number(sets: &AtomicUnionFind, stars: &Stars, triangles: &[[u32; 3]]) -> Self {
-        let roots: Vec<u32> = (0..stars.vertex_count())
+    /// Numbers the sets of `sets` (over all vertices, every edge's ends joined; `used(v)`: some
+    /// triangle uses `v`) in order of their smallest triangle in `triangles`.
+    pub(crate) fn number(
+        sets: &AtomicUnionFind,
+        used: impl Fn(usize) -> bool + Sync,
+        triangles: &[[u32; 3]],
+    ) -> Self {
+        let roots: Vec<u32> = (0..sets.len())
             .into_par_iter()
             .with_min_len(4096)
-            .map(|v| {
-                if stars.is_referenced(v) {
-                    sets.find(v) as u32
-                } else {
-                    NONE
-                }
-            })
+            .map(|v| if used(v) { sets.find(v) as u32 } else { NONE })
             .collect();
         // Each chunk of triangles lists the roots it meets first, in order (a root repeated from
         // the triangle before costs no lookup); the lists, in chunk order, number the roots.
@@ -118,11 +116,11 @@ impl ShellTally {
     /// Sums the vertices' shares (`shares[v]`: vertex `v`'s share of `V − E + F` and whether it
     /// or one of its edges is a defect) and boxes the shells' vertices (`positions`). Sums of
     /// integers, minima and maxima: the same on any thread count.
-    pub(crate) fn new(shells: &Shells, shares: &[(i32, bool)], positions: &[DVec3]) -> Self {
+    pub(crate) fn new(shells: &Shells, shares: &[Share], positions: &[DVec3]) -> Self {
         let n = shells.count();
-        let tally_of = |first: usize, shares: &[(i32, bool)]| {
+        let tally_of = |first: usize, shares: &[Share]| {
             let mut tally = Self::empty(n);
-            for (offset, &(chi, defective)) in shares.iter().enumerate() {
+            for (offset, &Share { chi, defective, .. }) in shares.iter().enumerate() {
                 let v = first + offset;
                 if let Some(s) = shells.of_vertex(v) {
                     tally.chi[s] += i64::from(chi);
@@ -193,7 +191,7 @@ impl ShellTally {
 
 #[cfg(test)]
 mod tests {
-    use super::{AtomicUnionFind, ShellTally, Shells};
+    use super::{AtomicUnionFind, Share, ShellTally, Shells};
     use crate::stars::Stars;
     use glam::DVec3;
 
@@ -205,7 +203,7 @@ mod tests {
             sets.union(t[0] as usize, t[1] as usize);
             sets.union(t[0] as usize, t[2] as usize);
         }
-        Shells::number(&sets, &stars, tris)
+        Shells::number(&sets, |v| stars.is_referenced(v), tris)
     }
 
     #[test]
@@ -229,6 +227,11 @@ mod tests {
             .map(|v| DVec3::new(v as f64, -(v as f64), 0.5 * v as f64))
             .collect();
         // Shell 0: χ = 2 (a sphere's); shell 1: χ = 1 (odd: not a closed surface).
+        let share = |(chi, defective)| Share {
+            chi,
+            defective,
+            used: true,
+        };
         let shares = [
             (2, false),
             (0, false),
@@ -236,7 +239,8 @@ mod tests {
             (1, false),
             (0, false),
             (0, false),
-        ];
+        ]
+        .map(share);
         let tally = ShellTally::new(&shells, &shares, &positions);
         assert_eq!(tally.genus(), vec![Some(0), None]);
         assert_eq!(tally.vertices(), 6);
@@ -252,7 +256,8 @@ mod tests {
             (2, false),
             (0, false),
             (0, false),
-        ];
+        ]
+        .map(share);
         let tally = ShellTally::new(&shells, &flagged, &positions);
         assert_eq!(tally.genus(), vec![None, Some(0)]);
     }

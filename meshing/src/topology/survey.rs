@@ -2,18 +2,21 @@
 //! the ends of every edge joined into shells, and the counts and first examples of each defect
 //! kind gathered in vertex order.
 //!
-//! Chunks are fixed ranges of vertices whose partial results are combined in chunk order, so the
-//! counts and examples (ascending `[smaller, larger]` edges, ascending vertices) are the same on
-//! every thread count.
+//! The stars come from the whole mesh's [`Stars`] when the self-intersection test needs them too
+//! ([`Survey::of`]), else a window of vertices at a time ([`Survey::windowed`],
+//! `crate::window_stars`). Chunks are ranges of vertices whose partial results are combined in
+//! vertex order, so the counts and examples (ascending `[smaller, larger]` edges, ascending
+//! vertices) are the same on every thread count and either way.
 
 use rayon::prelude::*;
 
 use super::atomic_union_find::AtomicUnionFind;
 use super::edges::EdgeKind;
-use super::local::{EdgeCounts, Local, Scratch, analyse};
+use super::local::{EdgeCounts, Local, Scratch, Share, analyse};
 use super::shells::Shells;
 use super::{MAX_EXAMPLES, Offenders, push_example};
 use crate::stars::Stars;
+use crate::window_stars::{WindowPlan, WindowStars};
 
 /// Vertices per parallel work item.
 const CHUNK: usize = 1 << 12;
@@ -23,9 +26,8 @@ const CHUNK: usize = 1 << 12;
 pub(crate) struct Survey {
     /// The shell of every vertex.
     pub(crate) shells: Shells,
-    /// Each vertex's share of `V − E + F` and whether it or an edge to a larger vertex is a
-    /// defect.
-    pub(crate) shares: Vec<(i32, bool)>,
+    /// Each vertex's share of `V − E + F`, defect flag and use.
+    pub(crate) shares: Vec<Share>,
     /// Undirected edges by kind.
     pub(crate) counts: EdgeCounts,
     /// Vertices with more than one fan.
@@ -63,13 +65,34 @@ impl Partial {
         self
     }
 
-    /// Adds one vertex's findings.
-    fn add(&mut self, v: u32, local: &Local) {
+    /// Analyses the `star` of `v`: counts its findings, joins its edges in `sets`, and gives
+    /// its share.
+    fn visit(
+        &mut self,
+        v: u32,
+        star: &[[u32; 2]],
+        scratch: &mut Scratch,
+        sets: &AtomicUnionFind,
+    ) -> Share {
+        let examples = &mut self.examples;
+        let local = analyse(v, star, scratch, |x, kind| {
+            let list = match kind {
+                EdgeKind::Manifold => return,
+                EdgeKind::Boundary => &mut examples.boundary_edges,
+                EdgeKind::NonManifold => &mut examples.non_manifold_edges,
+                EdgeKind::Inconsistent => &mut examples.inconsistent_edges,
+            };
+            if list.len() < MAX_EXAMPLES {
+                list.push([v, x]);
+            }
+        });
         self.counts.add(&local.counts);
         if local.fans > 1 {
             self.non_manifold_vertices += 1;
             push_example(&mut self.examples.non_manifold_vertices, v);
         }
+        join_edges(sets, v, star, &local);
+        local.share()
     }
 }
 
@@ -78,40 +101,59 @@ impl Survey {
     pub(crate) fn of(triangles: &[[u32; 3]], stars: &Stars) -> Self {
         let vertex_count = stars.vertex_count();
         let sets = AtomicUnionFind::new(vertex_count);
-        let mut shares = vec![(0i32, false); vertex_count];
-        let total = shares
+        let mut shares = vec![Share::default(); vertex_count];
+        let partials = shares
             .par_chunks_mut(CHUNK)
             .enumerate()
             .map_init(Scratch::default, |scratch, (i, shares)| {
                 let mut partial = Partial::default();
                 for (offset, share) in shares.iter_mut().enumerate() {
-                    let v = (i * CHUNK + offset) as u32;
-                    let star = stars.of(v as usize);
-                    let examples = &mut partial.examples;
-                    let local = analyse(v, star, scratch, |x, kind| {
-                        let list = match kind {
-                            EdgeKind::Manifold => return,
-                            EdgeKind::Boundary => &mut examples.boundary_edges,
-                            EdgeKind::NonManifold => &mut examples.non_manifold_edges,
-                            EdgeKind::Inconsistent => &mut examples.inconsistent_edges,
-                        };
-                        if list.len() < MAX_EXAMPLES {
-                            list.push([v, x]);
-                        }
-                    });
-                    partial.add(v, &local);
-                    *share = (
-                        i32::try_from(local.chi).unwrap_or(i32::MIN),
-                        local.defective(),
-                    );
-                    join_edges(&sets, v, star, &local);
+                    let v = i * CHUNK + offset;
+                    *share = partial.visit(v as u32, stars.of(v), scratch, &sets);
                 }
                 partial
             })
-            .collect::<Vec<_>>()
+            .collect();
+        Self::gather(partials, shares, &sets, triangles)
+    }
+
+    /// The vertex pass over the usable `triangles`, taking the stars a window of vertices at a
+    /// time; `None` when the triangles are in too little spatial order for windows (then
+    /// [`Survey::of`] over [`Stars::build`] is the way).
+    pub(crate) fn windowed(triangles: &[[u32; 3]], vertex_count: usize) -> Option<Self> {
+        let plan = WindowPlan::new(triangles, vertex_count)?;
+        let sets = AtomicUnionFind::new(vertex_count);
+        let mut shares = vec![Share::default(); vertex_count];
+        let partials = shares
+            .par_chunks_mut(plan.window())
+            .enumerate()
+            .map_init(
+                || (Scratch::default(), WindowStars::default()),
+                |(scratch, stars), (w, shares)| {
+                    plan.stars(w, triangles, stars);
+                    let mut partial = Partial::default();
+                    for (v, share) in plan.vertices(w).zip(shares) {
+                        *share = partial.visit(v as u32, stars.of(v), scratch, &sets);
+                    }
+                    partial
+                },
+            )
+            .collect();
+        Some(Self::gather(partials, shares, &sets, triangles))
+    }
+
+    /// The survey from the chunks' `partials` (in vertex order), the `shares` and the joined
+    /// `sets`.
+    fn gather(
+        partials: Vec<Partial>,
+        shares: Vec<Share>,
+        sets: &AtomicUnionFind,
+        triangles: &[[u32; 3]],
+    ) -> Self {
+        let total = partials
             .into_iter()
             .fold(Partial::default(), Partial::absorb);
-        let shells = Shells::number(&sets, stars, triangles);
+        let shells = Shells::number(sets, |v| shares[v].used, triangles);
         Self {
             shells,
             shares,

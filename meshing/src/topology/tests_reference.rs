@@ -327,3 +327,73 @@ fn many_shells_are_numbered_by_first_triangle_across_chunks() {
         }
     }
 }
+
+/// A large torus in spatial order (so the report takes its stars a window at a time) with
+/// defects of every kind and a few vertices renumbered last (as marching cubes numbers its
+/// centre vertices), whose corners are filed apart from their chunks: the windowed vertex pass
+/// must agree with the reference, and with the pass over the whole mesh's stars.
+#[test]
+fn windowed_vertex_pass_matches_the_reference_with_far_vertices_and_defects() {
+    let skip = ReportOptions {
+        self_intersections: false,
+    };
+    let mut rng = Rng(0x2545_F491_4F6C_DD1D);
+    let base = torus(240, 100);
+    let n = base.positions.len();
+    // Every 50th vertex (and a random few) renumbered after all the others.
+    let far: Vec<bool> = (0..n).map(|v| v % 50 == 7 || rng.below(300) == 0).collect();
+    let mut order = vec![0u32; n];
+    let mut next = 0u32;
+    for pass in [false, true] {
+        for v in 0..n {
+            if far[v] == pass {
+                order[v] = next;
+                next += 1;
+            }
+        }
+    }
+    let mut positions = vec![DVec3::ZERO; n];
+    for (v, p) in base.positions.iter().enumerate() {
+        positions[order[v] as usize] = *p;
+    }
+    let mut tris = Vec::new();
+    for (i, &t) in base.triangles.iter().enumerate() {
+        let t = t.map(|v| order[v as usize]);
+        match (i % 997, rng.below(2000)) {
+            (0, _) => {}
+            (1, _) => tris.push([t[0], t[2], t[1]]),
+            (2, _) => tris.extend([t, t]),
+            (_, 0) => tris.extend([t, [t[0], t[1], rng.below(n) as u32]]),
+            _ => tris.push(t),
+        }
+    }
+    // Two vertices glued: a non-manifold vertex.
+    let (a, b) = (order[1000], order[n - 1000]);
+    for t in &mut tris {
+        for i in t.iter_mut() {
+            if *i == a {
+                *i = b;
+            }
+        }
+    }
+    let mesh = IndexedMesh::new(positions, tris);
+    let expected = reference(&mesh);
+    let usable = crate::usable::usable_triangles(&mesh);
+    for threads in [1, 2, 3] {
+        let pool = rayon::ThreadPoolBuilder::new()
+            .num_threads(threads)
+            .build()
+            .unwrap();
+        pool.install(|| {
+            let windowed = super::survey::Survey::windowed(&usable, n).expect("spatial order");
+            let stars = crate::stars::Stars::build(&usable, n);
+            let global = super::survey::Survey::of(&usable, &stars);
+            assert_eq!(windowed.shares, global.shares, "{threads} threads");
+            assert_eq!(windowed.counts, global.counts);
+            let report = TopologyReport::with_options(&mesh, &skip);
+            assert_eq!(reported(&report), expected, "{threads} threads");
+        });
+    }
+    assert!(expected.boundary.0 > 0 && expected.inconsistent.0 > 0);
+    assert!(expected.non_manifold.0 > 0 && expected.non_manifold_vertices.0 > 0);
+}
