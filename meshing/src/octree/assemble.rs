@@ -16,6 +16,7 @@ use crate::grid::GridSpec;
 use crate::pieces::split_at;
 use crate::sink::MeshSink;
 use rayon::prelude::*;
+use std::borrow::Cow;
 use std::collections::HashMap;
 use std::ops::Range;
 
@@ -63,8 +64,8 @@ fn owner(g: usize, brick: usize, bricks_along: usize) -> (usize, usize) {
 }
 
 /// Emits the vertices and triangles of the bricks (sorted by z, y, x brick coordinates) into
-/// `sink` in the dense path's order. Triangle lists are consumed as they are resolved and vertex
-/// lists are freed before triangles are emitted, to keep the peak memory low. Returns the number
+/// `sink` in the dense path's order. The brick lists are views into the stores of their groups
+/// of bricks ([`super::brick::BrickStore`]), which the caller frees after assembly. Returns the number
 /// of orphan edges (see the module docs; 0 for every field whose intervals bound its samples).
 pub(crate) fn assemble(
     bricks: Vec<BrickEdges>,
@@ -157,7 +158,12 @@ pub(crate) fn assemble(
         .collect();
     let total = triangles.iter().map(|t| t.triangles.len()).sum();
     let mut resolved_triangles = vec![[0u32; 3]; total];
-    type Resolved = (Vec<u32>, Vec<glam::Vec3>, Vec<u32>, Vec<u64>);
+    type Resolved<'a> = (
+        Cow<'a, [u32]>,
+        Cow<'a, [glam::Vec3]>,
+        Cow<'a, [u32]>,
+        Vec<u64>,
+    );
     let resolved: Vec<Resolved> = triangles
         .into_par_iter()
         .zip(split_at(&mut resolved_triangles, &firsts))
@@ -547,7 +553,7 @@ mod tests {
     /// Two 2 × 2 × 2 bricks side by side along `x` (grid of 4 × 2 × 2 cells): brick 0 owns the
     /// sample rows below 2 along `x`, brick 1 the rest. Brick 0's one triangle uses its own edge,
     /// then two edges on its far face `x = 2`, which brick 1 owns at its local `x = 0`.
-    fn bricks(neighbour_lists: bool) -> (Vec<BrickEdges>, Vec<BrickTriangles>) {
+    fn bricks(neighbour_lists: bool) -> (Vec<BrickEdges<'static>>, Vec<BrickTriangles<'static>>) {
         let row_of = |owned: [usize; 3], edges: &[(u16, [usize; 2])]| {
             // rows (k, j) in order; `edges` as (local `i << 2 | axis`, (j, k)).
             let mut list = Vec::new();
@@ -576,15 +582,15 @@ mod tests {
                 coord: [0, 0, 0],
                 owned: [2, 3, 3],
                 extent: [2, 2, 2],
-                edges: e0,
-                edge_rows: r0,
+                edges: e0.into(),
+                edge_rows: r0.into(),
             },
             BrickEdges {
                 coord: [1, 0, 0],
                 owned: [3, 3, 3],
                 extent: [2, 2, 2],
-                edges: e1,
-                edge_rows: r1,
+                edges: e1.into(),
+                edge_rows: r1.into(),
             },
         ];
         let mut rows = vec![0u32; 5];
@@ -596,12 +602,12 @@ mod tests {
         ];
         let triangles = vec![
             BrickTriangles {
-                triangles: vec![tri],
-                triangle_rows: rows,
+                triangles: vec![tri].into(),
+                triangle_rows: rows.into(),
                 ..Default::default()
             },
             BrickTriangles {
-                triangle_rows: vec![0; 5],
+                triangle_rows: vec![0; 5].into(),
                 ..Default::default()
             },
         ];

@@ -20,6 +20,7 @@ use crate::marching_cubes::{edge_vertex, inside, settle, snap_noise};
 use glam::Vec3;
 use solidkit_kernel::Evaluator;
 use solidkit_kernel::eval::ZeroSide;
+use std::borrow::Cow;
 
 /// Number of distinct local edge ids (14 bits).
 pub(crate) const LOCAL_EDGE_IDS: usize = 1 << 14;
@@ -41,13 +42,13 @@ pub(crate) fn local_parts(id: u16) -> ([usize; 3], usize) {
     ([(id >> 2) & 15, (id >> 6) & 15, id >> 10], id & 3)
 }
 
-/// What one brick contributes.
+/// What one brick contributes: views into the [`BrickStore`] of its group.
 #[derive(Debug, Default)]
-pub(crate) struct BrickOutput {
+pub(crate) struct BrickOutput<'a> {
     /// Its vertices.
-    pub edges: BrickEdges,
+    pub edges: BrickEdges<'a>,
     /// Its triangles.
-    pub triangles: BrickTriangles,
+    pub triangles: BrickTriangles<'a>,
     /// Samples evaluated.
     pub samples: u64,
     /// Seconds spent evaluating the samples.
@@ -61,7 +62,7 @@ pub(crate) struct BrickOutput {
 
 /// The crossing edges a brick owns, row by row.
 #[derive(Debug, Default)]
-pub(crate) struct BrickEdges {
+pub(crate) struct BrickEdges<'a> {
     /// Brick coordinates (cell minimum / brick size).
     pub coord: [usize; 3],
     /// Owned sample rows per axis: lower samples with local coordinate below this are owned.
@@ -69,23 +70,133 @@ pub(crate) struct BrickEdges {
     /// Cells per axis in the brick.
     pub extent: [usize; 3],
     /// Owned crossing edges as (local `i << 2 | axis`, vertex), row by row (`k`, then `j`).
-    pub edges: Vec<(u16, Vec3)>,
+    pub edges: Cow<'a, [(u16, Vec3)]>,
     /// Start of each owned row `(k, j)` in `edges` (`owned[2] · owned[1] + 1` entries).
-    pub edge_rows: Vec<u32>,
+    pub edge_rows: Cow<'a, [u32]>,
 }
 
 /// A brick's triangles, row by row.
 #[derive(Debug, Default)]
-pub(crate) struct BrickTriangles {
+pub(crate) struct BrickTriangles<'a> {
     /// Triangles as brick-local corner edge ids, in cell order (`k`, `j`, `i`) then case order;
     /// ids from [`CENTRE_IDS`] up are centre vertices.
-    pub triangles: Vec<[u16; 3]>,
+    pub triangles: Cow<'a, [[u16; 3]]>,
     /// Start of each cell row `(k, j)` in `triangles` (`extent[2] · extent[1] + 1` entries).
-    pub triangle_rows: Vec<u32>,
+    pub triangle_rows: Cow<'a, [u32]>,
     /// Centre vertices of loops fanned from their centroid, in cell order.
-    pub centres: Vec<Vec3>,
+    pub centres: Cow<'a, [Vec3]>,
     /// Start of each cell row `(k, j)` in `centres`; empty when `centres` is.
-    pub centre_rows: Vec<u32>,
+    pub centre_rows: Cow<'a, [u32]>,
+}
+
+/// The lists of a group of bricks, one after the other in each array (a brick's rows count from
+/// its own start): a few allocations for the group where a list per brick grew the worker
+/// threads' heaps a page at a time (one `mprotect` each, under the lock the other threads' page
+/// faults take).
+#[derive(Debug, Default)]
+pub(crate) struct BrickStore {
+    edges: Vec<(u16, Vec3)>,
+    edge_rows: Vec<u32>,
+    triangles: Vec<[u16; 3]>,
+    triangle_rows: Vec<u32>,
+    centres: Vec<Vec3>,
+    centre_rows: Vec<u32>,
+    bricks: Vec<BrickEntry>,
+}
+
+/// One brick of a [`BrickStore`]: its fixed fields and where its lists end.
+#[derive(Debug, Clone, Copy)]
+struct BrickEntry {
+    coord: [usize; 3],
+    owned: [usize; 3],
+    extent: [usize; 3],
+    /// Ends of its lists: edges, edge rows, triangles, triangle rows, centres, centre rows.
+    ends: [usize; 6],
+    samples: u64,
+    evaluation_s: f64,
+    thin: ThinCounts,
+    certified: bool,
+}
+
+impl BrickStore {
+    /// Empties the store, keeping its buffers.
+    pub(crate) fn clear(&mut self) {
+        self.edges.clear();
+        self.edge_rows.clear();
+        self.triangles.clear();
+        self.triangle_rows.clear();
+        self.centres.clear();
+        self.centre_rows.clear();
+        self.bricks.clear();
+    }
+
+    /// A copy with every list at its exact size (one allocation each).
+    pub(crate) fn exact(&self) -> Self {
+        Self {
+            edges: self.edges.to_vec(),
+            edge_rows: self.edge_rows.to_vec(),
+            triangles: self.triangles.to_vec(),
+            triangle_rows: self.triangle_rows.to_vec(),
+            centres: self.centres.to_vec(),
+            centre_rows: self.centre_rows.to_vec(),
+            bricks: self.bricks.to_vec(),
+        }
+    }
+
+    /// Where the lists end now.
+    fn ends(&self) -> [usize; 6] {
+        [
+            self.edges.len(),
+            self.edge_rows.len(),
+            self.triangles.len(),
+            self.triangle_rows.len(),
+            self.centres.len(),
+            self.centre_rows.len(),
+        ]
+    }
+
+    /// An empty brick (a cancelled run's), its lists empty.
+    pub(crate) fn push_empty(&mut self) {
+        self.bricks.push(BrickEntry {
+            coord: [0; 3],
+            owned: [0; 3],
+            extent: [0; 3],
+            ends: self.ends(),
+            samples: 0,
+            evaluation_s: 0.0,
+            thin: ThinCounts::default(),
+            certified: true,
+        });
+    }
+
+    /// The stored bricks, in the order they were processed.
+    pub(crate) fn bricks(&self) -> impl Iterator<Item = BrickOutput<'_>> {
+        let mut starts = [0usize; 6];
+        self.bricks.iter().map(move |b| {
+            let r = |i: usize| starts[i]..b.ends[i];
+            let out = BrickOutput {
+                edges: BrickEdges {
+                    coord: b.coord,
+                    owned: b.owned,
+                    extent: b.extent,
+                    edges: Cow::Borrowed(&self.edges[r(0)]),
+                    edge_rows: Cow::Borrowed(&self.edge_rows[r(1)]),
+                },
+                triangles: BrickTriangles {
+                    triangles: Cow::Borrowed(&self.triangles[r(2)]),
+                    triangle_rows: Cow::Borrowed(&self.triangle_rows[r(3)]),
+                    centres: Cow::Borrowed(&self.centres[r(4)]),
+                    centre_rows: Cow::Borrowed(&self.centre_rows[r(5)]),
+                },
+                samples: b.samples,
+                evaluation_s: b.evaluation_s,
+                thin: b.thin,
+                certified: b.certified,
+            };
+            starts = b.ends;
+            out
+        })
+    }
 }
 
 /// Per-thread buffers reused from brick to brick.
@@ -96,11 +207,9 @@ pub(crate) struct BrickScratch<E: Evaluator> {
     /// Scratch of the pinch check.
     pinch: PinchScratch<E::IntervalScratch>,
     evaluation_s: f64,
-    /// A brick's crossing edges, triangles and centres are gathered here and copied out at
-    /// their exact size: one allocation each per brick instead of a doubling series.
-    edges: Vec<(u16, Vec3)>,
-    triangles: Vec<[u16; 3]>,
-    centres: Vec<Vec3>,
+    /// The lists of the bricks of the current group, copied out at their exact size when the
+    /// group is done ([`BrickStore::exact`]).
+    pub(crate) store: BrickStore,
 }
 
 impl<E: Evaluator> BrickScratch<E> {
@@ -112,9 +221,7 @@ impl<E: Evaluator> BrickScratch<E> {
             batch: Default::default(),
             pinch: Default::default(),
             evaluation_s: 0.0,
-            edges: Vec::new(),
-            triangles: Vec::new(),
-            centres: Vec::new(),
+            store: BrickStore::default(),
         }
     }
 }
@@ -290,13 +397,14 @@ fn sample<E: Evaluator>(
         .extend(s.samples.values.iter().map(|&v| u8::from(inside(v))));
 }
 
+/// Samples and polygonizes one brick, appending its lists to `s.store`.
 pub(crate) fn process<E: Evaluator>(
     node: &Node<E>,
     root: &E,
     spec: &GridSpec,
     brick: usize,
     s: &mut BrickScratch<E>,
-) -> BrickOutput {
+) {
     let e = node.extent(spec);
     let n = [e[0] + 1, e[1] + 1, e[2] + 1];
     sample(node, root, spec, n, s);
@@ -308,20 +416,13 @@ pub(crate) fn process<E: Evaluator>(
             brick.min(e[a])
         }
     });
-    let mut out = BrickEdges {
-        coord: node.min.map(|m| m / brick),
-        owned,
-        extent: e,
-        ..Default::default()
-    };
+    let store = &mut s.store;
     let point = |i: usize, j: usize, k: usize| {
         spec.point(node.min[0] + i, node.min[1] + j, node.min[2] + k)
     };
     let mut certified = true;
-    let mut found = std::mem::take(&mut s.edges);
-    found.clear();
-    out.edge_rows.reserve(owned[2] * owned[1] + 1);
-    out.edge_rows.push(0);
+    let edge_base = store.edges.len();
+    store.edge_rows.push(0);
     for k in 0..owned[2] {
         for j in 0..owned[1] {
             for i in 0..owned[0] {
@@ -347,16 +448,12 @@ pub(crate) fn process<E: Evaluator>(
                     let (lo, hi) = (point(i, j, k)[axis], q[axis]);
                     let top = point(i + o[0], j + o[1], k + o[2])[axis];
                     certified &= disjoint::strictly_inside(lo, hi, top);
-                    found.push(((i << 2 | axis) as u16, q.as_vec3()));
+                    store.edges.push(((i << 2 | axis) as u16, q.as_vec3()));
                 }
             }
-            out.edge_rows.push(found.len() as u32);
+            store.edge_rows.push((store.edges.len() - edge_base) as u32);
         }
     }
-    out.edges = found.to_vec();
-    s.edges = found;
-    let edges = out;
-    let mut out = BrickTriangles::default();
     let table = case_table();
     let rule = Pinch {
         program: root,
@@ -379,15 +476,10 @@ pub(crate) fn process<E: Evaluator>(
         )
         .expect("a cell's triangles use crossing edges only")
     };
-    let (mut triangles, mut centres) = (
-        std::mem::take(&mut s.triangles),
-        std::mem::take(&mut s.centres),
-    );
-    triangles.clear();
-    centres.clear();
-    out.triangle_rows.reserve(e[2] * e[1] + 1);
-    out.triangle_rows.push(0);
-    out.centre_rows.push(0);
+    let (triangle_base, centre_base) = (store.triangles.len(), store.centres.len());
+    let centre_rows_start = store.centre_rows.len();
+    store.triangle_rows.push(0);
+    store.centre_rows.push(0);
     for k in 0..e[2] {
         for j in 0..e[1] {
             for i in 0..e[0] {
@@ -410,7 +502,7 @@ pub(crate) fn process<E: Evaluator>(
                 if centre != NO_CENTRE {
                     let l = &table.loops(config)[centre as usize];
                     let c = loop_centre(l.iter().map(|&edge| crossing(i, j, k, edge)));
-                    centres.push(c.as_vec3());
+                    store.centres.push(c.as_vec3());
                     centre_at = c;
                 }
                 let tris = table.triangles(config);
@@ -419,35 +511,40 @@ pub(crate) fn process<E: Evaluator>(
                     certified &=
                         disjoint::cell_disjoint(tris, centre_at, |edge| crossing(i, j, k, edge));
                 }
+                let centres = store.centres.len() - centre_base;
                 for tri in tris {
-                    triangles.push(tri.map(|edge| {
+                    store.triangles.push(tri.map(|edge| {
                         if edge == CENTRE {
-                            return CENTRE_IDS + (centres.len() - 1) as u16;
+                            return CENTRE_IDS + (centres - 1) as u16;
                         }
                         let (axis, o) = edge_origin(edge);
                         local_edge(i + o[0], j + o[1], k + o[2], axis)
                     }));
                 }
             }
-            out.triangle_rows.push(triangles.len() as u32);
-            out.centre_rows.push(centres.len() as u32);
+            store
+                .triangle_rows
+                .push((store.triangles.len() - triangle_base) as u32);
+            store
+                .centre_rows
+                .push((store.centres.len() - centre_base) as u32);
         }
     }
-    out.triangles = triangles.to_vec();
-    out.centres = centres.to_vec();
-    (s.triangles, s.centres) = (triangles, centres);
-    if out.centres.is_empty() {
-        // The common case: no row table kept (an empty table means no centre in any row).
-        out.centre_rows = Vec::new();
+    // The common case keeps no row table (an empty table means no centre in any row).
+    if store.centres.len() == centre_base {
+        store.centre_rows.truncate(centre_rows_start);
     }
-    BrickOutput {
-        edges,
-        triangles: out,
+    let ends = store.ends();
+    store.bricks.push(BrickEntry {
+        coord: node.min.map(|m| m / brick),
+        owned,
+        extent: e,
+        ends,
         samples: s.samples.values.len() as u64,
         evaluation_s: s.evaluation_s,
         thin: s.samples.thin,
         certified,
-    }
+    });
 }
 
 solidkit_kernel::wide_loop! {

@@ -70,28 +70,36 @@ pub fn mesh_sparse_into<E: Evaluator>(
     }
     let done = std::sync::atomic::AtomicUsize::new(0);
     let total = leaves.len();
-    let mut outputs: Vec<brick::BrickOutput> = leaves
-        .par_iter()
+    // Bricks in groups: each group's lists go into one store (a few allocations per group);
+    // groups small enough that every thread gets several.
+    let group = (total / (8 * rayon::current_num_threads().max(1))).clamp(1, BRICK_GROUP);
+    let stores: Vec<brick::BrickStore> = leaves
+        .par_chunks(group)
         .map_init(
             || brick::BrickScratch::new(opts.clock.clone()),
-            |scratch, leaf| {
-                if opts.is_cancelled() {
-                    return brick::BrickOutput::default();
+            |scratch, group| {
+                scratch.store.clear();
+                for leaf in group {
+                    if opts.is_cancelled() {
+                        scratch.store.push_empty();
+                        continue;
+                    }
+                    brick::process(leaf, program, &spec, opts.brick_size(), scratch);
+                    let n = done.fetch_add(1, Ordering::Relaxed) + 1;
+                    opts.report(Progress {
+                        stage: "bricks",
+                        done: n,
+                        total,
+                    });
                 }
-                let out = brick::process(leaf, program, &spec, opts.brick_size(), scratch);
-                let n = done.fetch_add(1, Ordering::Relaxed) + 1;
-                opts.report(Progress {
-                    stage: "bricks",
-                    done: n,
-                    total,
-                });
-                out
+                scratch.store.exact()
             },
         )
         .collect();
     if opts.is_cancelled() {
         return Err(Cancelled);
     }
+    let mut outputs: Vec<brick::BrickOutput> = stores.iter().flat_map(|s| s.bricks()).collect();
     drop(leaves);
     stats.samples_evaluated = outputs.iter().map(|o| o.samples).sum();
     stats.evaluation_cpu_s = outputs.iter().map(|o| o.evaluation_s).sum();
@@ -110,6 +118,9 @@ pub fn mesh_sparse_into<E: Evaluator>(
     stats.assemble_s = opts.now() - t2;
     Ok(stats)
 }
+
+/// The most leaf bricks per group of [`brick::BrickStore`].
+const BRICK_GROUP: usize = 32;
 
 /// Dense marching cubes with the full program at every sample: the reference the sparse path
 /// must reproduce exactly.
