@@ -13,8 +13,8 @@
 //! or two windows. The corners of a chunk further than four windows from its anchor (marching
 //! cubes numbers the centre vertices of its fanned cells last) are *strays*: listed
 //! once, by window, and filed from that list. A mesh in no spatial order has strays everywhere:
-//! when they are more than an eighth of the corners, [`WindowPlan::new`] declines and the caller
-//! builds the global stars instead.
+//! when they are more than an eighth of the corners (or the mesh has 2³² corners or more),
+//! [`WindowPlan::new`] declines and the caller builds the global stars instead.
 //!
 //! A star lists the same `[next, previous]` pairs as [`crate::stars::Stars`], chunk corners in
 //! triangle order, then strays in triangle order: a fixed order for every thread count.
@@ -73,6 +73,11 @@ impl WindowPlan {
     /// The plan for `triangles` (usable: indices below `vertex_count` and distinct), or `None`
     /// when the triangles are in too little spatial order (see the module docs).
     pub(crate) fn new(triangles: &[[u32; 3]], vertex_count: usize) -> Option<Self> {
+        // A window's star offsets are `u32`: its corners must number below 2³², which every
+        // window's do when the whole mesh's do (the global stars count in `usize`).
+        if triangles.len() > u32::MAX as usize / 3 {
+            return None;
+        }
         // Windows small enough to keep their stars in cache (about six corners per vertex) and
         // several per thread, for balance; the reach covers a chunk's usual spread.
         let threads = rayon::current_num_threads().max(1);
