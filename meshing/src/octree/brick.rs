@@ -155,20 +155,6 @@ impl BrickStore {
         ]
     }
 
-    /// An empty brick (a cancelled run's), its lists empty.
-    pub(crate) fn push_empty(&mut self) {
-        self.bricks.push(BrickEntry {
-            coord: [0; 3],
-            owned: [0; 3],
-            extent: [0; 3],
-            ends: self.ends(),
-            samples: 0,
-            evaluation_s: 0.0,
-            thin: ThinCounts::default(),
-            certified: true,
-        });
-    }
-
     /// The stored bricks, in the order they were processed.
     pub(crate) fn bricks(&self) -> impl Iterator<Item = BrickOutput<'_>> {
         let mut starts = [0usize; 6];

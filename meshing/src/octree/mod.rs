@@ -81,8 +81,7 @@ pub fn mesh_sparse_into<E: Evaluator>(
                 scratch.store.clear();
                 for leaf in group {
                     if opts.is_cancelled() {
-                        scratch.store.push_empty();
-                        continue;
+                        break; // the run returns `Cancelled` below
                     }
                     brick::process(leaf, program, &spec, opts.brick_size(), scratch);
                     let n = done.fetch_add(1, Ordering::Relaxed) + 1;
