@@ -82,14 +82,16 @@ impl Measures {
 /// Sums one chunk of triangles starting at triangle `first`.
 fn chunk_partial(mesh: &IndexedMesh, first: usize, chunk: &[[u32; 3]], center: DVec3) -> Partial {
     let mut partial = Partial::default();
+    let (mut volume6, mut area2) = (0.0, 0.0);
     for (offset, tri) in chunk.iter().enumerate() {
         let degenerate = match corners(mesh, tri) {
             Some(corners) => {
                 let (cross, longest_sq) = cross_and_longest(corners);
-                let [a, b, c] = corners.map(|p| p - center);
-                partial.volume += a.dot(b.cross(c)) / 6.0;
-                partial.area += cross.length() * 0.5;
-                cross.length() <= DEGENERATE_EPS * longest_sq
+                // det(a − c, b − c, d − c) = (a − c) · ((b − a) × (d − a)).
+                volume6 += (corners[0] - center).dot(cross);
+                let length = cross.length();
+                area2 += length;
+                length <= DEGENERATE_EPS * longest_sq
             }
             None => true,
         };
@@ -102,6 +104,8 @@ fn chunk_partial(mesh: &IndexedMesh, first: usize, chunk: &[[u32; 3]], center: D
             }
         }
     }
+    partial.volume = volume6 / 6.0;
+    partial.area = area2 * 0.5;
     partial
 }
 
@@ -112,11 +116,12 @@ fn corners(mesh: &IndexedMesh, tri: &[u32; 3]) -> Option<[DVec3; 3]> {
 
 /// The (unnormalised) normal and the squared length of the longest edge.
 fn cross_and_longest([a, b, c]: [DVec3; 3]) -> (DVec3, f64) {
-    let longest_sq = (b - a)
+    let (ab, ac) = (b - a, c - a);
+    let longest_sq = ab
         .length_squared()
-        .max((c - b).length_squared())
-        .max((a - c).length_squared());
-    ((b - a).cross(c - a), longest_sq)
+        .max((ac - ab).length_squared())
+        .max(ac.length_squared());
+    (ab.cross(ac), longest_sq)
 }
 
 /// Bounding box of the referenced positions; all zeros when there are none.
