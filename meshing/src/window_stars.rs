@@ -17,7 +17,10 @@
 //! [`WindowPlan::new`] declines and the caller builds the global stars instead.
 //!
 //! A star lists the same `[next, previous]` pairs as [`crate::stars::Stars`], chunk corners in
-//! triangle order, then strays in triangle order: a fixed order for every thread count.
+//! triangle order, then strays in triangle order. Which corners are strays depends on the window
+//! size, and so on the thread count, so the order within a star can differ between thread counts;
+//! nothing the vertex pass finds depends on it (it counts and joins, and lists examples in
+//! ascending order).
 
 use std::ops::Range;
 
